@@ -1,0 +1,152 @@
+#include "CaseRunner.hpp"
+
+#include <stoa/core/InputError.hpp>
+#include <stoa/image/ImageCompare.hpp>
+
+#include <exception>
+
+namespace stoa::grader {
+
+namespace {
+
+constexpr int kExitNotAttempted = 3;
+constexpr int kExitBadUsage = 2;
+
+const char* const kNoReference = "no reference image: run stoa-grade --update-references from a solutions build";
+
+std::string sizeText(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
+
+// Why a process that did not exit 0 or 3 failed, with its last line of output
+// when that line says more.
+std::string errorReason(const ProcessOutcome& process) {
+    std::string reason = process.describe();
+    if (process.exitedWith(kExitBadUsage)) reason += " (bad usage)";
+    if (process.ending == ProcessEnding::Exited || process.ending == ProcessEnding::Signalled) {
+        std::string last = process.lastOutputLine();
+        if (!last.empty()) reason += ": " + last;
+    }
+    return reason;
+}
+
+} // namespace
+
+std::string notAttemptedReason(const ProcessOutcome& process) {
+    std::string last = process.lastOutputLine();
+    if (last.rfind("stoa: ", 0) == 0) last = last.substr(6);
+    if (last.find("not implemented") != std::string::npos) return last;
+    return "not attempted (a stub is not implemented yet)";
+}
+
+RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings) {
+    RenderOutcome outcome;
+    try {
+        std::error_code ignored;
+        std::filesystem::remove_all(job.workDir, ignored);
+        std::filesystem::create_directories(job.workDir);
+        outcome.imagePath = job.workDir / "rendered.png";
+
+        std::vector<std::string> argv{job.program.string(), "--render", job.spec.name, "--output",
+                                      outcome.imagePath.string()};
+        if (!settings.backend.empty()) {
+            argv.push_back("--backend");
+            argv.push_back(settings.backend);
+        }
+        outcome.process = runProcess(argv, job.workDir, settings.limits);
+
+        if (outcome.process.exitedWith(kExitNotAttempted)) {
+            outcome.status = GradeStatus::NotAttempted;
+            outcome.reason = notAttemptedReason(outcome.process);
+            return outcome;
+        }
+        if (!outcome.process.exitedWith(0)) {
+            outcome.reason = errorReason(outcome.process);
+            return outcome;
+        }
+        if (!std::filesystem::exists(outcome.imagePath)) {
+            outcome.reason = "exited 0 but wrote no image to " + outcome.imagePath.string();
+            return outcome;
+        }
+        try {
+            outcome.image = Image::load(outcome.imagePath);
+        } catch (const InputError& error) {
+            outcome.reason = "the image it wrote does not decode: " + error.message();
+            return outcome;
+        }
+        if (outcome.image.width() != job.spec.width || outcome.image.height() != job.spec.height) {
+            outcome.reason = "rendered " + sizeText(outcome.image.width(), outcome.image.height()) + ", expected " +
+                             sizeText(job.spec.width, job.spec.height);
+            return outcome;
+        }
+        outcome.rendered = true;
+    } catch (const std::exception& error) {
+        outcome.rendered = false;
+        outcome.status = GradeStatus::Error;
+        outcome.reason = std::string("the grader could not run the case: ") + error.what();
+    }
+    return outcome;
+}
+
+GradeResult gradeCase(const CaseJob& job, const RunSettings& settings) {
+    GradeResult result;
+    result.lab = job.lab;
+    result.caseName = job.spec.name;
+    result.maxPoints = job.spec.points;
+    result.visibility = job.spec.visibility;
+    result.referenceImage = job.reference;
+
+    RenderOutcome render = renderCase(job, settings);
+    result.seconds = render.process.seconds;
+    result.programOutput = render.process.output;
+    if (!render.imagePath.empty() && std::filesystem::exists(render.imagePath)) result.renderedImage = render.imagePath;
+    if (!render.rendered) {
+        result.status = render.status;
+        result.reason = render.reason;
+        return result;
+    }
+
+    try {
+        if (!std::filesystem::exists(job.reference)) {
+            result.status = GradeStatus::NoReference;
+            result.reason = kNoReference;
+            return result;
+        }
+        Image reference;
+        try {
+            reference = Image::load(job.reference);
+        } catch (const InputError& error) {
+            result.status = GradeStatus::Error;
+            result.reason = "the reference image does not decode (" + error.message() +
+                            "); regenerate it with stoa-grade --update-references";
+            return result;
+        }
+        if (reference.width() != job.spec.width || reference.height() != job.spec.height) {
+            result.status = GradeStatus::Error;
+            result.reason = "the reference is " + sizeText(reference.width(), reference.height()) +
+                            " but the case renders " + sizeText(job.spec.width, job.spec.height) +
+                            "; regenerate it with stoa-grade --update-references";
+            return result;
+        }
+        CompareResult comparison = compareImages(render.image, reference, job.spec.compare);
+        result.reason = comparison.summary;
+        if (comparison.passed) {
+            result.status = GradeStatus::Passed;
+            result.points = job.spec.points;
+            return result;
+        }
+        result.status = GradeStatus::Failed;
+        try {
+            std::filesystem::path heatMap = job.workDir / "heatmap.png";
+            differenceHeatMap(render.image, reference, job.spec.compare).savePng(heatMap);
+            result.heatMapImage = heatMap;
+        } catch (const std::exception& error) {
+            result.reason += " (no heat map: " + std::string(error.what()) + ")";
+        }
+    } catch (const std::exception& error) {
+        result.status = GradeStatus::Error;
+        result.points = 0.0;
+        result.reason = std::string("the grader could not compare the images: ") + error.what();
+    }
+    return result;
+}
+
+} // namespace stoa::grader

@@ -1,0 +1,53 @@
+#pragma once
+// Renders one graded case with its lab program in a child process and grades
+// the image against the reference.
+//
+//   <program> --render CASE --output <workDir>/rendered.png [--backend osmesa|egl]
+//     exit 0: the image is written;  exit 3: not attempted (a stub threw);
+//     exit 2: bad usage;  anything else: an error.
+
+#include "ChildProcess.hpp"
+#include "GradeResult.hpp"
+
+#include <stoa/image/Image.hpp>
+#include <stoa/lab/CaseManifest.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace stoa::grader {
+
+struct CaseJob {
+    std::string lab;                      // "01_transforms"
+    std::filesystem::path program;        // the lab program to run
+    CaseSpec spec;                        // size, points, visibility, compare options
+    std::filesystem::path reference;      // may not exist: the result is then "no reference"
+    std::filesystem::path workDir;        // emptied and recreated; the program runs and writes there
+};
+
+struct RunSettings {
+    ProcessLimits limits = defaultLimits(60.0);
+    std::string backend;                  // passed as --backend when not empty
+};
+
+struct RenderOutcome {
+    bool rendered = false;                // an image of the case's size was written and read back
+    GradeStatus status = GradeStatus::Error;   // NotAttempted or Error when not rendered
+    std::string reason;                   // why not rendered, in one line
+    Image image;
+    std::filesystem::path imagePath;      // <workDir>/rendered.png
+    ProcessOutcome process;
+};
+
+/// Runs the program for one case. Never throws: every failure is an outcome.
+RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings);
+
+/// renderCase(), then the comparison with the reference; for a failed case the
+/// heat map is written to <workDir>/heatmap.png. Never throws.
+GradeResult gradeCase(const CaseJob& job, const RunSettings& settings);
+
+/// The reason for exit status 3: "not implemented: Camera::viewMatrix()" from the
+/// program's last line "stoa: not implemented: Camera::viewMatrix()".
+std::string notAttemptedReason(const ProcessOutcome& process);
+
+} // namespace stoa::grader

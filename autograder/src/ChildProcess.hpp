@@ -1,0 +1,65 @@
+#pragma once
+// Runs one program as a child process under limits, the way the grader runs a
+// student's lab: fork + exec (no shell), stdout and stderr merged into one pipe
+// and kept to a few kilobytes, a wall-clock timeout after which the child's
+// whole process group is killed, and resource limits set in the child before
+// exec. The call always returns; nothing the child does can hang the grader.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace stoa::grader {
+
+/// Limits for one child. Zero means "no limit" for every field but the timeout.
+struct ProcessLimits {
+    double timeoutSeconds = 60.0;                         // wall clock; then SIGKILL to the process group
+    double cpuSeconds = 65.0;                             // RLIMIT_CPU (the grader uses timeout + 5 s)
+    std::uint64_t addressSpaceBytes = 4ull << 30;         // RLIMIT_AS, 4 GiB
+    std::uint64_t fileSizeBytes = 64ull << 20;            // RLIMIT_FSIZE, 64 MiB per file
+    std::size_t outputLimitBytes = 4096;                  // captured output kept (head and tail)
+};
+
+/// The limits the grader uses for a given timeout: CPU time timeout + 5 s, and no
+/// address-space limit when this program was built with AddressSanitizer (its
+/// shadow memory needs terabytes of address space; the lab programs share the build).
+ProcessLimits defaultLimits(double timeoutSeconds);
+
+enum class ProcessEnding {
+    Exited,          // returned from main or called exit(); see exitCode
+    Signalled,       // killed by a signal it did not handle; see signal
+    TimedOut,        // ran past timeoutSeconds and was killed
+    FailedToStart,   // fork or exec failed; see startError
+};
+
+struct ProcessOutcome {
+    ProcessEnding ending = ProcessEnding::FailedToStart;
+    int exitCode = -1;             // valid when ending == Exited
+    int signal = 0;                // valid when ending == Signalled
+    double seconds = 0.0;          // wall-clock run time
+    double timeoutSeconds = 0.0;   // the limit it ran under, for describe()
+    std::string output;            // stdout and stderr interleaved, possibly truncated
+    bool outputTruncated = false;  // true when `output` left bytes out (a marker line says how many)
+    std::string startError;        // why it did not start (FailedToStart only)
+
+    bool exitedWith(int code) const { return ending == ProcessEnding::Exited && exitCode == code; }
+    /// One line: "exited with status 1", "crashed with SIGSEGV (segmentation fault)",
+    /// "timed out after 60 s", "could not start /x/y: No such file or directory".
+    std::string describe() const;
+    /// The last non-empty line of `output` ("" when there is none).
+    std::string lastOutputLine() const;
+};
+
+/// Runs `argv` (argv[0] is the program's path; no PATH search, no shell) in
+/// `workDir` (the current directory when empty) and waits for it under `limits`.
+/// The child gets its own process group; when it ends or times out, whatever is
+/// left of that group (grandchildren holding the pipe open) is killed too.
+/// Safe to call from several threads at once.
+ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::filesystem::path& workDir,
+                          const ProcessLimits& limits);
+
+/// "SIGSEGV (segmentation fault)" for a signal number; "signal 77" for an unknown one.
+std::string describeSignal(int signal);
+
+} // namespace stoa::grader

@@ -1,0 +1,52 @@
+#pragma once
+// stoa-grade's command line.
+//
+//   stoa-grade [--lab NN_name|NN]... [--case NAME]... [--bin-dir DIR] [--backend osmesa|egl]
+//              [--json FILE] [--timeout SECONDS] [--jobs N] [--work-dir DIR]
+//              [--expect pass|not-attempted]
+//   stoa-grade --update-references [--lab ...] [--case ...]
+//   stoa-grade --check-mistakes [--lab ...]
+//   stoa-grade --help
+//
+// Options take their value as the next argument or after '=' (--jobs=4).
+
+#include "GradeResult.hpp"
+
+#include <stoa/core/InputError.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stoa::grader {
+
+/// Bad usage: stoa-grade prints it with the usage and exits with status 2.
+class UsageError : public InputError {
+public:
+    explicit UsageError(const std::string& message) : InputError("", 0, message) {}
+};
+
+enum class Mode { Grade, UpdateReferences, CheckMistakes, Help };
+
+struct Options {
+    Mode mode = Mode::Grade;
+    std::vector<std::string> labs;            // as given: "01_transforms" or "01"; empty = every built lab
+    std::vector<std::string> cases;           // empty = every case of the selected labs
+    std::filesystem::path binDir;             // empty = the folder stoa-grade runs from
+    std::string backend;                      // "osmesa", "egl", or empty for the lab program's default
+    std::filesystem::path jsonFile;           // Gradescope results.json; empty = none
+    double timeoutSeconds = 60.0;             // per case, wall clock
+    int jobs = 1;                             // cases rendered at once
+    std::filesystem::path workDir;            // empty = a fresh folder under the system's temp dir
+    std::optional<GradeStatus> expect;        // Passed or NotAttempted: exit 1 unless every case has it
+};
+
+/// Parses the arguments after the program name. Throws UsageError naming the
+/// argument and the valid choices.
+Options parseCommandLine(const std::vector<std::string>& arguments);
+
+/// The --help text.
+std::string usageText();
+
+} // namespace stoa::grader

@@ -1,0 +1,93 @@
+#include "GradeCommand.hpp"
+
+#include "Grader.hpp"
+#include "Report.hpp"
+#include "ResultsJson.hpp"
+
+#include <chrono>
+#include <sstream>
+
+namespace stoa::grader {
+
+namespace {
+
+// The text Gradescope shows above the tests: the score, the counts, the hints.
+std::string summaryText(const Totals& totals) {
+    std::ostringstream text;
+    text << "score: " << formatPoints(totals.points) << " / " << formatPoints(totals.maxPoints) << " ("
+         << totals.statuses.describe() << ")\n";
+    for (const std::string& hint : hints(totals)) text << hint << "\n";
+    return text.str();
+}
+
+bool worthKeeping(const GradeResult& result) {
+    return result.status == GradeStatus::Failed || result.status == GradeStatus::Error;
+}
+
+} // namespace
+
+std::vector<std::string> unmetExpectations(const std::vector<GradeResult>& results, GradeStatus expected) {
+    std::vector<std::string> lines;
+    if (results.empty()) lines.push_back("no case was graded");
+    for (const GradeResult& result : results)
+        if (result.status != expected)
+            lines.push_back(result.fullName() + " is " + statusName(result.status) +
+                            (result.reason.empty() ? "" : ": " + result.reason));
+    return lines;
+}
+
+int runGrade(const Options& options, const Environment& env) {
+    auto start = std::chrono::steady_clock::now();
+    std::vector<PlannedLab> labs = planLabs(options, env, true);
+    if (labs.empty()) {
+        env.err << "stoa-grade: no lab program to run in " << env.binDir.string()
+                << ": build the labs first (cmake --build build) or point --bin-dir at them\n";
+        return 1;
+    }
+
+    std::filesystem::path workDir = makeWorkDir(options.workDir);
+    std::vector<CaseJob> jobs;
+    for (const PlannedLab& lab : labs) {
+        std::vector<CaseJob> labJobs = caseJobs(lab, lab.program, env.sourceDir, workDir);
+        jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
+    }
+
+    std::vector<GradeResult> results =
+        gradeCases(jobs, runSettings(options), options.jobs, [&](const GradeResult& result, std::size_t done,
+                                                                 std::size_t total) {
+            env.err << progressLine(result, done, total) << std::endl;
+        });
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    Totals totals = summarize(results);
+    env.out << "\n";
+    printReport(env.out, results, totals);
+    std::vector<std::string> hintLines = hints(totals);
+    if (!hintLines.empty()) env.out << "\n";
+    for (const std::string& hint : hintLines) env.out << hint << "\n";
+
+    if (!options.jsonFile.empty()) {
+        writeResultsJson(options.jsonFile, results, totals, seconds, summaryText(totals));
+        env.out << "wrote " << options.jsonFile.string() << "\n";
+    }
+
+    bool keep = !options.workDir.empty() || std::any_of(results.begin(), results.end(), worthKeeping);
+    if (keep) {
+        env.out << "rendered images and heat maps: " << workDir.string() << "\n";
+    } else {
+        std::error_code ignored;
+        std::filesystem::remove_all(workDir, ignored);
+    }
+
+    if (options.expect) {
+        std::vector<std::string> unmet = unmetExpectations(results, *options.expect);
+        if (!unmet.empty()) {
+            env.err << "stoa-grade: expected every case to be " << statusName(*options.expect) << ", but:\n";
+            for (const std::string& line : unmet) env.err << "  " << line << "\n";
+            return 1;
+        }
+    }
+    return 0;
+}
+
+} // namespace stoa::grader

@@ -1,0 +1,68 @@
+#include "Grader.hpp"
+
+#include <stoa/core/InputError.hpp>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <thread>
+
+namespace stoa::grader {
+
+void forEachInParallel(std::size_t count, int jobs, const std::function<void(std::size_t)>& task) {
+    std::atomic<std::size_t> next{0};
+    auto worker = [&]() {
+        for (std::size_t i = next++; i < count; i = next++) task(i);
+    };
+    std::size_t threadCount = std::min<std::size_t>(count, static_cast<std::size_t>(std::max(1, jobs)));
+    if (threadCount <= 1) {
+        worker();
+        return;
+    }
+    std::vector<std::thread> threads;
+    for (std::size_t i = 0; i < threadCount; ++i) threads.emplace_back(worker);
+    for (std::thread& thread : threads) thread.join();
+}
+
+std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunSettings& settings, int parallelJobs,
+                                    const ProgressCallback& progress) {
+    std::vector<GradeResult> results(jobs.size());
+    std::mutex progressMutex;
+    std::size_t done = 0;
+    forEachInParallel(jobs.size(), parallelJobs, [&](std::size_t i) {
+        results[i] = gradeCase(jobs[i], settings);
+        std::lock_guard<std::mutex> lock(progressMutex);
+        ++done;
+        if (progress) progress(results[i], done, jobs.size());
+    });
+    return results;
+}
+
+std::string progressLine(const GradeResult& result, std::size_t done, std::size_t total) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.1f", result.seconds);
+    return "[" + std::to_string(done) + "/" + std::to_string(total) + "] " + result.fullName() + " ... " +
+           statusName(result.status) + " (" + seconds + " s)";
+}
+
+std::filesystem::path makeWorkDir(const std::filesystem::path& requested) {
+    if (!requested.empty()) {
+        std::error_code error;
+        std::filesystem::create_directories(requested, error);
+        if (error || !std::filesystem::is_directory(requested))
+            throw InputError(requested.string(), 0, "cannot create the work folder: " + error.message());
+        return std::filesystem::absolute(requested);
+    }
+    std::error_code error;
+    std::filesystem::path temp = std::filesystem::temp_directory_path(error);
+    if (error) temp = "/tmp";
+    std::string pattern = (temp / "stoa-grade-XXXXXX").string();
+    if (!mkdtemp(pattern.data()))
+        throw InputError(pattern, 0, std::string("cannot create a temporary work folder: ") + std::strerror(errno));
+    return pattern;
+}
+
+} // namespace stoa::grader

@@ -1,0 +1,36 @@
+#pragma once
+// Grades many cases, `jobs` of them at once: a small pool of worker threads,
+// each running one lab program at a time in its own child process.
+
+#include "CaseRunner.hpp"
+#include "GradeResult.hpp"
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace stoa::grader {
+
+/// Calls `task(i)` for every i in [0, count), on up to `jobs` threads at once,
+/// and returns when all are done. `task` must not throw.
+void forEachInParallel(std::size_t count, int jobs, const std::function<void(std::size_t)>& task);
+
+/// Called as each case finishes (from one thread at a time): the result, how many
+/// are done, and how many there are.
+using ProgressCallback = std::function<void(const GradeResult& result, std::size_t done, std::size_t total)>;
+
+/// Grades every job; the results come back in the order of `jobs`.
+std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunSettings& settings, int parallelJobs,
+                                    const ProgressCallback& progress = {});
+
+/// "[3/12] 01_transforms/orbit_front ... passed (0.8 s)"
+std::string progressLine(const GradeResult& result, std::size_t done, std::size_t total);
+
+/// `requested` (created when missing), or a new folder stoa-grade-XXXXXX in the
+/// system's temp folder when `requested` is empty. Returned as an absolute path.
+/// Throws InputError when it cannot be created.
+std::filesystem::path makeWorkDir(const std::filesystem::path& requested);
+
+} // namespace stoa::grader

@@ -1,0 +1,186 @@
+#include "JsonWriter.hpp"
+
+#include <stoa/core/Assert.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace stoa::grader {
+
+namespace {
+
+// Length of the valid UTF-8 sequence starting at text[i], or 0 when invalid
+// (overlong forms, surrogates and code points past U+10FFFF are invalid).
+std::size_t utf8SequenceLength(std::string_view text, std::size_t i) {
+    auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    unsigned char lead = byte(i);
+    std::size_t length;
+    unsigned int codePoint;
+    if (lead < 0x80) return 1;
+    if (lead >= 0xC2 && lead <= 0xDF) {
+        length = 2;
+        codePoint = lead & 0x1F;
+    } else if (lead >= 0xE0 && lead <= 0xEF) {
+        length = 3;
+        codePoint = lead & 0x0F;
+    } else if (lead >= 0xF0 && lead <= 0xF4) {
+        length = 4;
+        codePoint = lead & 0x07;
+    } else {
+        return 0;
+    }
+    if (i + length > text.size()) return 0;
+    for (std::size_t k = 1; k < length; ++k) {
+        if ((byte(i + k) & 0xC0) != 0x80) return 0;
+        codePoint = (codePoint << 6) | (byte(i + k) & 0x3F);
+    }
+    if (length == 3 && (codePoint < 0x800 || (codePoint >= 0xD800 && codePoint <= 0xDFFF))) return 0;
+    if (length == 4 && (codePoint < 0x10000 || codePoint > 0x10FFFF)) return 0;
+    return length;
+}
+
+} // namespace
+
+std::string jsonQuote(std::string_view text) {
+    std::string quoted;
+    quoted.reserve(text.size() + 2);
+    quoted += '"';
+    for (std::size_t i = 0; i < text.size();) {
+        unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x80) {
+            std::size_t length = utf8SequenceLength(text, i);
+            if (length == 0) {
+                quoted += "\xEF\xBF\xBD"; // U+FFFD, the replacement character
+                ++i;
+            } else {
+                quoted.append(text.substr(i, length));
+                i += length;
+            }
+            continue;
+        }
+        switch (c) {
+        case '"': quoted += "\\\""; break;
+        case '\\': quoted += "\\\\"; break;
+        case '\n': quoted += "\\n"; break;
+        case '\r': quoted += "\\r"; break;
+        case '\t': quoted += "\\t"; break;
+        case '\b': quoted += "\\b"; break;
+        case '\f': quoted += "\\f"; break;
+        default:
+            if (c < 0x20) {
+                char escape[8];
+                std::snprintf(escape, sizeof escape, "\\u%04x", c);
+                quoted += escape;
+            } else {
+                quoted += static_cast<char>(c);
+            }
+        }
+        ++i;
+    }
+    quoted += '"';
+    return quoted;
+}
+
+void JsonWriter::newline() {
+    m_text += '\n';
+    m_text.append(2 * m_levels.size(), ' ');
+}
+
+void JsonWriter::beforeValue() {
+    if (m_levels.empty()) {
+        STOA_ASSERT(!m_rootWritten, "JsonWriter: the document already has its top-level value; "
+                                    "put further values inside an array or object.");
+        m_rootWritten = true;
+        return;
+    }
+    Level& level = m_levels.back();
+    if (level.isObject) {
+        STOA_ASSERT(level.keyWritten, "JsonWriter: a value inside an object needs a key; call key() first.");
+        level.keyWritten = false;
+        return;
+    }
+    if (level.members++ > 0) m_text += ',';
+    newline();
+}
+
+JsonWriter& JsonWriter::open(char bracket, bool isObject) {
+    beforeValue();
+    m_text += bracket;
+    m_levels.push_back(Level{isObject, 0, false});
+    return *this;
+}
+
+JsonWriter& JsonWriter::close(char bracket, bool isObject) {
+    STOA_ASSERT(!m_levels.empty() && m_levels.back().isObject == isObject,
+                "JsonWriter: endObject()/endArray() does not match the open beginObject()/beginArray().");
+    STOA_ASSERT(!m_levels.back().keyWritten, "JsonWriter: a key has no value; call value() before endObject().");
+    bool empty = m_levels.back().members == 0;
+    m_levels.pop_back();
+    if (!empty) newline();
+    m_text += bracket;
+    return *this;
+}
+
+JsonWriter& JsonWriter::beginObject() { return open('{', true); }
+JsonWriter& JsonWriter::endObject() { return close('}', true); }
+JsonWriter& JsonWriter::beginArray() { return open('[', false); }
+JsonWriter& JsonWriter::endArray() { return close(']', false); }
+
+JsonWriter& JsonWriter::key(std::string_view name) {
+    STOA_ASSERT(!m_levels.empty() && m_levels.back().isObject, "JsonWriter::key(): keys belong inside an object; "
+                                                               "call beginObject() first.");
+    Level& level = m_levels.back();
+    STOA_ASSERT(!level.keyWritten, "JsonWriter::key(): the previous key has no value yet.");
+    if (level.members++ > 0) m_text += ',';
+    newline();
+    m_text += jsonQuote(name);
+    m_text += ": ";
+    level.keyWritten = true;
+    return *this;
+}
+
+JsonWriter& JsonWriter::value(std::string_view text) {
+    beforeValue();
+    m_text += jsonQuote(text);
+    return *this;
+}
+
+JsonWriter& JsonWriter::value(double number) {
+    if (!std::isfinite(number)) return null();
+    beforeValue();
+    // The shortest of %.1g..%.17g that reads back as the same double.
+    char text[40];
+    for (int precision = 1; precision <= 17; ++precision) {
+        std::snprintf(text, sizeof text, "%.*g", precision, number);
+        if (std::strtod(text, nullptr) == number) break;
+    }
+    m_text += text;
+    return *this;
+}
+
+JsonWriter& JsonWriter::value(int number) {
+    beforeValue();
+    m_text += std::to_string(number);
+    return *this;
+}
+
+JsonWriter& JsonWriter::value(bool flag) {
+    beforeValue();
+    m_text += flag ? "true" : "false";
+    return *this;
+}
+
+JsonWriter& JsonWriter::null() {
+    beforeValue();
+    m_text += "null";
+    return *this;
+}
+
+const std::string& JsonWriter::text() const {
+    STOA_ASSERT(m_levels.empty(), "JsonWriter::text(): an object or array is still open; "
+                                  "close it with endObject()/endArray() first.");
+    return m_text;
+}
+
+} // namespace stoa::grader

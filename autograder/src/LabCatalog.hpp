@@ -1,0 +1,50 @@
+#pragma once
+// Where the grader finds things: the labs (folders labs/NN_name/ with a
+// cases.ini), their programs in the bin folder, the reference images, and the
+// planted-mistake programs.
+//
+//   labs/01_transforms/cases.ini                         the manifest (public cases)
+//   <bin>/lab01_transforms                               the lab's program ("lab" + folder name)
+//   <bin>/mistakes/01_transforms.MISTAKE/lab01_transforms   one program per planted mistake
+//   autograder/references/01_transforms/CASE.png         the reference images
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace stoa::grader {
+
+struct LabEntry {
+    std::string lab;                       // the folder name, "01_transforms"
+    std::filesystem::path manifestPath;    // labs/01_transforms/cases.ini
+};
+
+/// Every labs/NN_*/ folder of `sourceDir` that has a cases.ini, sorted by name.
+std::vector<LabEntry> findLabs(const std::filesystem::path& sourceDir);
+
+/// The labs named by `requested` ("01_transforms", "01", "1" or "transforms"), in
+/// lab order without repeats; all of `labs` when `requested` is empty. Throws
+/// UsageError naming the unknown lab and listing the labs.
+std::vector<LabEntry> selectLabs(const std::vector<LabEntry>& labs, const std::vector<std::string>& requested);
+
+/// "lab01_transforms" for "01_transforms".
+std::string programName(const std::string& lab);
+
+/// <binDir>/lab01_transforms
+std::filesystem::path labProgram(const std::filesystem::path& binDir, const std::string& lab);
+
+/// <binDir>/mistakes/01_transforms.MISTAKE/lab01_transforms
+std::filesystem::path mistakeProgram(const std::filesystem::path& binDir, const std::string& lab,
+                                     const std::string& mistake);
+
+/// <sourceDir>/autograder/references/<lab>/<caseName>.png
+std::filesystem::path referenceImagePath(const std::filesystem::path& sourceDir, const std::string& lab,
+                                         const std::string& caseName);
+
+/// True when `path` is a regular file this user may execute.
+bool isExecutable(const std::filesystem::path& path);
+
+/// The folder of the running program (from /proc/self/exe); empty when unknown.
+std::filesystem::path executableDir();
+
+} // namespace stoa::grader

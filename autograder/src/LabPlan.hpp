@@ -1,0 +1,47 @@
+#pragma once
+// What one run of stoa-grade works on: the selected labs, read from their
+// manifests, with the selected cases, and the jobs that render them.
+
+#include "CaseRunner.hpp"
+#include "CommandLine.hpp"
+#include "LabCatalog.hpp"
+
+#include <stoa/lab/CaseManifest.hpp>
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace stoa::grader {
+
+/// The folders a run uses and where it prints.
+struct Environment {
+    std::filesystem::path sourceDir;   // the repository root (labs/, solutions/, autograder/references/)
+    std::filesystem::path binDir;      // the lab programs
+    std::ostream& out;                 // the report
+    std::ostream& err;                 // notes and progress
+};
+
+struct PlannedLab {
+    std::string lab;                   // "01_transforms"
+    LabManifest manifest;
+    std::vector<CaseSpec> cases;       // the manifest's cases that --case selects (all without --case)
+    std::filesystem::path program;     // <bin>/labNN_name; may not exist when not required
+};
+
+/// The labs --lab selects (all labs without it), with their manifests and the
+/// cases --case selects. With `requirePrograms`, a lab whose program is not
+/// built is left out with a note on `env.err`. Throws UsageError for an unknown
+/// lab or case, InputError for a manifest that does not parse.
+std::vector<PlannedLab> planLabs(const Options& options, const Environment& env, bool requirePrograms);
+
+/// One job per selected case of `lab`, run by `program`, each in its own folder
+/// <workDir>/<lab>/<case>.
+std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path& program,
+                              const std::filesystem::path& sourceDir, const std::filesystem::path& workDir);
+
+/// The limits and backend from the command line.
+RunSettings runSettings(const Options& options);
+
+} // namespace stoa::grader

@@ -1,0 +1,140 @@
+#include "MistakeCheck.hpp"
+
+#include "Grader.hpp"
+#include "Report.hpp"
+
+#include <algorithm>
+
+namespace stoa::grader {
+
+namespace {
+
+struct MistakeRun {
+    MistakeFile mistake;
+    std::string manifestProblem;   // a fails: case the manifest does not have
+    std::size_t firstJob = 0;
+    std::size_t jobCount = 0;
+};
+
+std::string joined(const std::vector<std::string>& words) {
+    std::string text;
+    for (const std::string& word : words) text += (text.empty() ? "" : " ") + word;
+    return text;
+}
+
+std::string padded(const std::string& text, std::size_t width) {
+    return text.size() >= width ? text : text + std::string(width - text.size(), ' ');
+}
+
+} // namespace
+
+MistakeVerdict judgeMistake(const MistakeFile& mistake, const std::vector<GradeResult>& results) {
+    std::vector<std::string> problems;
+    for (const std::string& name : mistake.fails) {
+        auto result = std::find_if(results.begin(), results.end(),
+                                   [&](const GradeResult& entry) { return entry.caseName == name; });
+        if (result == results.end())
+            problems.push_back(name + " was not graded");
+        else if (result->status != GradeStatus::Failed)
+            problems.push_back(name + " " + (result->status == GradeStatus::Passed ? "passed"
+                                             : std::string("is ") + statusName(result->status) + ": " + result->reason));
+    }
+    std::vector<std::string> alsoFails;
+    for (const GradeResult& result : results)
+        if (result.status == GradeStatus::Failed &&
+            std::find(mistake.fails.begin(), mistake.fails.end(), result.caseName) == mistake.fails.end())
+            alsoFails.push_back(result.caseName);
+
+    MistakeVerdict verdict;
+    verdict.caught = problems.empty();
+    if (verdict.caught) {
+        verdict.detail = "caught";
+    } else {
+        verdict.detail = "NOT caught: ";
+        for (std::size_t i = 0; i < problems.size(); ++i) verdict.detail += (i ? "; " : "") + problems[i];
+    }
+    if (!alsoFails.empty()) verdict.detail += " (also fails " + joined(alsoFails) + ")";
+    return verdict;
+}
+
+int runCheckMistakes(const Options& options, const Environment& env) {
+    std::vector<PlannedLab> labs = planLabs(options, env, false);
+    std::filesystem::path solutionsDir = env.sourceDir / "solutions";
+    if (!std::filesystem::is_directory(solutionsDir)) {
+        env.err << "stoa-grade: this tree has no solutions/ folder (a student release), so it has no planted "
+                   "mistakes to check\n";
+        return 1;
+    }
+
+    std::filesystem::path workDir = makeWorkDir(options.workDir);
+    std::vector<MistakeRun> runs;
+    std::vector<CaseJob> jobs;
+    int notBuilt = 0;
+    for (const PlannedLab& lab : labs) {
+        for (MistakeFile& mistake : loadMistakes(solutionsDir / lab.lab)) {
+            std::filesystem::path program = mistakeProgram(env.binDir, lab.lab, mistake.name);
+            if (!isExecutable(program)) {
+                env.err << "note: mistake " << lab.lab << "." << mistake.name << " is not built (no program "
+                        << program.string() << "); skipping it\n";
+                ++notBuilt;
+                continue;
+            }
+            MistakeRun run;
+            run.mistake = std::move(mistake);
+            for (const std::string& name : run.mistake.fails)
+                if (!lab.manifest.find(name))
+                    run.manifestProblem += (run.manifestProblem.empty() ? "" : "; ") + std::string("fails: names '") +
+                                           name + "', which is not a case of " + lab.lab + " (cases: " +
+                                           lab.manifest.caseNames() + ")";
+            std::vector<CaseJob> labJobs =
+                caseJobs(lab, program, env.sourceDir, workDir / "mistakes" / (lab.lab + "." + run.mistake.name));
+            run.firstJob = jobs.size();
+            run.jobCount = labJobs.size();
+            jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
+            runs.push_back(std::move(run));
+        }
+    }
+    if (runs.empty()) {
+        env.err << "stoa-grade: no mistake program to check in " << (env.binDir / "mistakes").string()
+                << (notBuilt > 0 ? ": build them in a solutions build with tests "
+                                   "(-DSTOA_USE_SOLUTIONS=ON -DSTOA_BUILD_TESTS=ON)\n"
+                                 : ": no solutions/NN_name/mistakes/*.mistake file for the selected labs\n");
+        return 1;
+    }
+
+    std::vector<GradeResult> results = gradeCases(
+        jobs, runSettings(options), options.jobs,
+        [&](const GradeResult& result, std::size_t done, std::size_t total) {
+            env.err << progressLine(result, done, total) << std::endl;
+        });
+
+    std::size_t nameWidth = 7, failsWidth = 10;
+    for (const MistakeRun& run : runs) {
+        nameWidth = std::max(nameWidth, run.mistake.lab.size() + 1 + run.mistake.name.size());
+        failsWidth = std::max(failsWidth, joined(run.mistake.fails).size());
+    }
+    env.out << "\n" << padded("mistake", nameWidth) << "  " << padded("must fail", failsWidth) << "  result\n";
+    env.out << std::string(nameWidth + failsWidth + 4 + 30, '-') << "\n";
+    int caught = 0;
+    bool keepImages = false;
+    for (const MistakeRun& run : runs) {
+        std::vector<GradeResult> own(results.begin() + run.firstJob, results.begin() + run.firstJob + run.jobCount);
+        MistakeVerdict verdict = judgeMistake(run.mistake, own);
+        if (!run.manifestProblem.empty()) verdict = MistakeVerdict{false, "NOT checked: " + run.manifestProblem};
+        if (verdict.caught) ++caught;
+        else keepImages = true;
+        env.out << padded(run.mistake.lab + "." + run.mistake.name, nameWidth) << "  "
+                << padded(joined(run.mistake.fails), failsWidth) << "  " << verdict.detail << "\n";
+    }
+    env.out << "\n" << caught << " of " << runs.size() << " mistakes caught\n";
+
+    if (keepImages || !options.workDir.empty()) {
+        env.out << "rendered images and heat maps: " << workDir.string() << "\n";
+    } else {
+        std::error_code ignored;
+        std::filesystem::remove_all(workDir, ignored);
+    }
+    return caught == static_cast<int>(runs.size()) ? 0 : 1;
+}
+
+} // namespace stoa::grader

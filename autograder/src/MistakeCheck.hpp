@@ -1,0 +1,29 @@
+#pragma once
+// `stoa-grade --check-mistakes`: each planted mistake (a solution with one bug,
+// built to <bin>/mistakes/<lab>.<mistake>/) must fail the cases its `fails:`
+// line names -- fail as "failed", a wrong image, not as an error or "not
+// attempted". Prints one row per mistake; exit 1 if any is not caught.
+
+#include "CommandLine.hpp"
+#include "GradeResult.hpp"
+#include "LabPlan.hpp"
+#include "MistakeFile.hpp"
+
+#include <string>
+#include <vector>
+
+namespace stoa::grader {
+
+struct MistakeVerdict {
+    bool caught = false;
+    std::string detail;   // "caught", or what went wrong: "orbit_front passed", "fails: names unknown case x"
+};
+
+/// Whether `results` (the mistake program's results for its lab) catch `mistake`.
+MistakeVerdict judgeMistake(const MistakeFile& mistake, const std::vector<GradeResult>& results);
+
+/// Returns the exit status: 0 when every built mistake is caught, 1 otherwise
+/// (or when there is no mistake program to check).
+int runCheckMistakes(const Options& options, const Environment& env);
+
+} // namespace stoa::grader

@@ -1,0 +1,129 @@
+#include "ReferenceUpdate.hpp"
+
+#include "Grader.hpp"
+
+#include <stoa/core/InputError.hpp>
+#include <stoa/image/ImageCompare.hpp>
+
+#include <cstring>
+#include <sstream>
+
+namespace stoa::grader {
+
+namespace {
+
+constexpr double kInfoTimeoutSeconds = 30.0;
+
+bool samePixels(const Image& a, const Image& b) {
+    return a.width() == b.width() && a.height() == b.height() && a.channels() == b.channels() &&
+           std::memcmp(a.data(), b.data(), a.sizeInBytes()) == 0;
+}
+
+// Writes or keeps one reference; returns the line to print and sets `ok`.
+std::string updateOne(const CaseJob& job, const RenderOutcome& render, bool& ok) {
+    ok = false;
+    if (!render.rendered) return std::string(statusName(render.status)) + ": " + render.reason;
+    std::error_code error;
+    bool existed = std::filesystem::exists(job.reference, error);
+    std::string verdict = "new";
+    if (existed) {
+        Image previous;
+        try {
+            previous = Image::load(job.reference);
+        } catch (const InputError&) {
+            previous = Image();
+        }
+        if (!previous.empty() && samePixels(previous, render.image)) {
+            ok = true;
+            return "unchanged";
+        }
+        if (previous.empty()) {
+            verdict = "changed (the old reference did not decode)";
+        } else {
+            CompareResult comparison = compareImages(render.image, previous, job.spec.compare);
+            if (comparison.passed) {
+                ok = true;
+                return "unchanged (within tolerance: " + comparison.summary + ")";
+            }
+            verdict = "changed (" + comparison.summary + ")";
+        }
+    }
+    std::filesystem::create_directories(job.reference.parent_path(), error);
+    std::filesystem::copy_file(render.imagePath, job.reference, std::filesystem::copy_options::overwrite_existing,
+                               error);
+    if (error) return "error: cannot write " + job.reference.string() + ": " + error.message();
+    ok = true;
+    return verdict;
+}
+
+} // namespace
+
+std::string trackFromInfo(const std::string& infoOutput) {
+    std::istringstream lines(infoOutput);
+    for (std::string line; std::getline(lines, line);) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.rfind("track=", 0) == 0) return line.substr(6);
+    }
+    return "";
+}
+
+int runUpdateReferences(const Options& options, const Environment& env) {
+    std::vector<PlannedLab> labs = planLabs(options, env, true);
+    if (labs.empty()) {
+        env.err << "stoa-grade: no lab program to run in " << env.binDir.string()
+                << ": build the solutions first (cmake -DSTOA_USE_SOLUTIONS=ON, then cmake --build)\n";
+        return 1;
+    }
+
+    RunSettings settings = runSettings(options);
+    ProcessLimits infoLimits = settings.limits;
+    infoLimits.timeoutSeconds = kInfoTimeoutSeconds;
+    std::vector<std::string> refusals;
+    for (const PlannedLab& lab : labs) {
+        ProcessOutcome info = runProcess({lab.program.string(), "--info"}, {}, infoLimits);
+        std::string track = info.exitedWith(0) ? trackFromInfo(info.output) : "";
+        if (!info.exitedWith(0))
+            refusals.push_back(lab.program.string() + " --info " + info.describe());
+        else if (track != "solutions")
+            refusals.push_back(lab.program.string() + " is built from " +
+                               (track.empty() ? std::string("an unknown track (no track= line)") : "track=" + track));
+    }
+    if (!refusals.empty()) {
+        env.err << "stoa-grade: refusing to write references: they must come from the solutions.\n";
+        for (const std::string& line : refusals) env.err << "  " << line << "\n";
+        env.err << "Configure a solutions build (cmake -S . -B build-solutions -DSTOA_USE_SOLUTIONS=ON), build it, "
+                   "and run its stoa-grade --update-references.\n";
+        return 1;
+    }
+
+    std::filesystem::path workDir = makeWorkDir(options.workDir);
+    std::vector<CaseJob> jobs;
+    for (const PlannedLab& lab : labs) {
+        std::vector<CaseJob> labJobs = caseJobs(lab, lab.program, env.sourceDir, workDir);
+        jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
+    }
+    std::vector<RenderOutcome> renders(jobs.size());
+    forEachInParallel(jobs.size(), options.jobs, [&](std::size_t i) { renders[i] = renderCase(jobs[i], settings); });
+
+    int failures = 0;
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+        bool ok = false;
+        std::string line = updateOne(jobs[i], renders[i], ok);
+        if (!ok) ++failures;
+        env.out << jobs[i].lab << "/" << jobs[i].spec.name << ": " << line << "\n";
+    }
+    env.out << "references in " << (env.sourceDir / "autograder" / "references").string() << ": "
+            << jobs.size() - failures << " of " << jobs.size() << " up to date\n";
+
+    if (failures > 0) {
+        env.out << "rendered images: " << workDir.string() << "\n";
+        return 1;
+    }
+    if (options.workDir.empty()) {
+        std::error_code ignored;
+        std::filesystem::remove_all(workDir, ignored);
+    }
+    return 0;
+}
+
+} // namespace stoa::grader

@@ -1,0 +1,61 @@
+#pragma once
+// Adds grade results up per lab and overall, and prints them as the terminal
+// table a student reads after `stoa-grade`.
+
+#include "GradeResult.hpp"
+
+#include <array>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace stoa::grader {
+
+constexpr int kStatusCount = 5;
+
+struct StatusCounts {
+    std::array<int, kStatusCount> counts{};   // indexed by GradeStatus
+
+    void add(GradeStatus status) { ++counts[static_cast<int>(status)]; }
+    int operator[](GradeStatus status) const { return counts[static_cast<int>(status)]; }
+    int total() const;
+    /// "2 passed, 1 failed, 3 not attempted" (statuses with a zero count left out).
+    std::string describe() const;
+};
+
+struct LabTotals {
+    std::string lab;
+    double points = 0.0;
+    double maxPoints = 0.0;
+    StatusCounts statuses;
+
+    /// True when the lab has cases and every one of them is "not attempted".
+    bool nothingAttempted() const;
+};
+
+struct Totals {
+    std::vector<LabTotals> labs;   // in the order the results first name them
+    double points = 0.0;
+    double maxPoints = 0.0;
+    StatusCounts statuses;
+};
+
+/// Sums points and counts statuses per lab and overall.
+Totals summarize(const std::vector<GradeResult>& results);
+
+/// True when there is at least one result and every result has `status`.
+bool allHaveStatus(const std::vector<GradeResult>& results, GradeStatus status);
+
+/// Points as a person writes them: "10", "2.5", "0.25".
+std::string formatPoints(double points);
+
+/// The table (lab, case, status, error, points), the details of every case that
+/// did not pass (full reason, image paths, the end of the program's output),
+/// the totals per lab and overall, and the final line "score: X / Y".
+void printReport(std::ostream& out, const std::vector<GradeResult>& results, const Totals& totals);
+
+/// One line per lab where nothing was attempted yet, pointing at its docs page:
+/// "lab 01_transforms: nothing attempted yet -- start with docs/labs/01_transforms.md".
+std::vector<std::string> hints(const Totals& totals);
+
+} // namespace stoa::grader

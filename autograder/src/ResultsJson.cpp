@@ -1,0 +1,84 @@
+#include "ResultsJson.hpp"
+
+#include "JsonWriter.hpp"
+
+#include <stoa/core/InputError.hpp>
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+
+namespace stoa::grader {
+
+namespace {
+
+// "1.3" for the third case of lab 01_*: the lab's number, then the case's place in it.
+std::string testNumber(const std::string& lab, int labIndex, int caseIndex) {
+    std::size_t digits = 0;
+    while (digits < lab.size() && std::isdigit(static_cast<unsigned char>(lab[digits]))) ++digits;
+    int labNumber = digits > 0 ? std::stoi(lab.substr(0, digits)) : labIndex;
+    return std::to_string(labNumber) + "." + std::to_string(caseIndex);
+}
+
+std::string testOutput(const GradeResult& result) {
+    std::string text = statusName(result.status);
+    if (!result.reason.empty()) text += ": " + result.reason;
+    text += "\n";
+    if ((result.status == GradeStatus::Error || result.status == GradeStatus::NotAttempted) &&
+        !result.programOutput.empty())
+        text += "\nThe program's output:\n" + result.programOutput + "\n";
+    return text;
+}
+
+} // namespace
+
+std::string resultsJson(const std::vector<GradeResult>& results, const Totals& totals, double executionSeconds,
+                        const std::string& output) {
+    JsonWriter json;
+    json.beginObject();
+    json.key("score").value(totals.points);
+    json.key("execution_time").value(static_cast<int>(std::ceil(std::max(0.0, executionSeconds))));
+    json.key("output").value(output);
+    json.key("visibility").value("visible");
+    json.key("stdout_visibility").value("hidden");
+    json.key("tests").beginArray();
+    std::string currentLab;
+    int labIndex = 0;
+    int caseIndex = 0;
+    for (const GradeResult& result : results) {
+        if (result.lab != currentLab || labIndex == 0) {
+            currentLab = result.lab;
+            ++labIndex;
+            caseIndex = 0;
+        }
+        ++caseIndex;
+        json.beginObject();
+        json.key("score").value(result.points);
+        json.key("max_score").value(result.maxPoints);
+        json.key("status").value(result.status == GradeStatus::Passed ? "passed" : "failed");
+        json.key("name").value(result.fullName());
+        json.key("number").value(testNumber(result.lab, labIndex, caseIndex));
+        json.key("output").value(testOutput(result));
+        json.key("tags").beginArray().value(result.lab).value(statusName(result.status)).endArray();
+        json.key("visibility").value(result.visibility == Visibility::Hidden ? "after_published" : "visible");
+        json.endObject();
+    }
+    json.endArray();
+    json.endObject();
+    return json.text() + "\n";
+}
+
+void writeResultsJson(const std::filesystem::path& path, const std::vector<GradeResult>& results,
+                      const Totals& totals, double executionSeconds, const std::string& output) {
+    std::error_code ignored;
+    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ignored);
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    if (!file) throw InputError(path.string(), 0, std::string("cannot write the results: ") + std::strerror(errno));
+    file << resultsJson(results, totals, executionSeconds, output);
+    file.close();
+    if (!file) throw InputError(path.string(), 0, "cannot write the results (disk full?)");
+}
+
+} // namespace stoa::grader

@@ -1,0 +1,46 @@
+# Every dependency comes from the distribution's packages (see .ci/install-deps.sh).
+# A missing one stops the configure step with the package that provides it.
+
+find_package(PkgConfig REQUIRED)
+find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
+find_package(Threads REQUIRED)
+
+function(stoa_require_pkg target module package)
+  pkg_check_modules(${target} IMPORTED_TARGET ${module})
+  if(NOT ${target}_FOUND)
+    message(FATAL_ERROR "Stoa needs ${module} (Debian package: ${package}). "
+                        "Run .ci/install-deps.sh, or install it by hand.")
+  endif()
+endfunction()
+
+stoa_require_pkg(GLEW glew libglew-dev)
+stoa_require_pkg(GLUT glut freeglut3-dev)
+stoa_require_pkg(STB stb libstb-dev)
+
+find_package(tinyobjloader CONFIG QUIET)
+if(NOT tinyobjloader_FOUND)
+  message(FATAL_ERROR "Stoa needs tinyobjloader (Debian package: libtinyobjloader-dev). Run .ci/install-deps.sh.")
+endif()
+
+find_path(GLM_INCLUDE_DIR glm/glm.hpp)
+if(NOT GLM_INCLUDE_DIR)
+  message(FATAL_ERROR "Stoa needs GLM (Debian package: libglm-dev). Run .ci/install-deps.sh.")
+endif()
+
+# OSMesa is loaded at run time (dlopen), so one binary runs on machines with
+# and without it (Mesa 25.1 dropped OSMesa). Only its header is used here.
+find_path(OSMESA_INCLUDE_DIR GL/osmesa.h)
+if(OSMESA_INCLUDE_DIR)
+  set(STOA_HAVE_OSMESA_HEADER ON)
+else()
+  message(STATUS "GL/osmesa.h not found: headless rendering will use EGL only")
+  set(STOA_HAVE_OSMESA_HEADER OFF)
+endif()
+
+if(STOA_BUILD_TESTS)
+  find_package(Catch2 QUIET)
+  if(NOT Catch2_FOUND)
+    message(FATAL_ERROR "The tests need Catch2 (Debian package: catch2). "
+                        "Run .ci/install-deps.sh, or configure with -DSTOA_BUILD_TESTS=OFF.")
+  endif()
+endif()

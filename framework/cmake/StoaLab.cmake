@@ -1,0 +1,226 @@
+# The lab mechanism.
+#
+# A lab is a folder labs/NN_name/ with its app (lab.cpp), its cases (cases.ini)
+# and the files a student edits. solutions/NN_name/ holds the same student files,
+# filled in. A "track" says where the student files come from:
+#   main       labs/ by default, solutions/ with -DSTOA_USE_SOLUTIONS=ON  -> build/bin/
+#   stubs      labs/, built beside a solutions build for the tests       -> build/bin/stubs/
+#   mistake    a solution with one planted mistake (solutions/NN/mistakes/*.mistake)
+#                                                                         -> build/bin/mistakes/NN_name.MISTAKE/
+#
+#   stoa_add_lab(NAME 01_transforms
+#                STUDENT_FILES transforms.cpp camera_controls.cpp   # C++ and GLSL, twins in solutions/
+#                APP_SOURCES lab.cpp
+#                USES ...)                                          # earlier labs whose student code it links
+#
+# Student C++ becomes an OBJECT library per lab and track, so a later lab links the
+# student's own earlier code. Student GLSL is read at run time through a search
+# path baked into each program: [mistake overlay,] track root, shaders/.
+
+set(STOA_LABS_DIR ${CMAKE_SOURCE_DIR}/labs)
+set(STOA_SOLUTIONS_DIR ${CMAKE_SOURCE_DIR}/solutions)
+if(STOA_USE_SOLUTIONS)
+  set(STOA_MAIN_TRACK_DIR ${STOA_SOLUTIONS_DIR})
+  set(STOA_MAIN_TRACK_NAME solutions)
+else()
+  set(STOA_MAIN_TRACK_DIR ${STOA_LABS_DIR})
+  set(STOA_MAIN_TRACK_NAME labs)
+endif()
+# Extra tracks exist only where the solutions do and the tests are built.
+if(STOA_USE_SOLUTIONS AND STOA_BUILD_TESTS)
+  set(STOA_BUILD_EXTRA_TRACKS ON)
+else()
+  set(STOA_BUILD_EXTRA_TRACKS OFF)
+endif()
+set_property(GLOBAL PROPERTY STOA_LABS "")
+set_property(GLOBAL PROPERTY STOA_MISTAKES "")
+
+# Object library with the student C++ of `lab` for one track; returns its name in `out`.
+function(_stoa_student_objects out lab track_suffix source_dir)
+  get_property(cpp_files GLOBAL PROPERTY STOA_LAB_${lab}_CPP)
+  set(target stoa_student_${lab}${track_suffix})
+  if(NOT TARGET ${target})
+    if(cpp_files)
+      set(sources "")
+      foreach(file IN LISTS cpp_files)
+        list(APPEND sources ${source_dir}/${file})
+      endforeach()
+      add_library(${target} OBJECT ${sources})
+      target_link_libraries(${target} PUBLIC stoa)
+    else()
+      add_library(${target} INTERFACE)   # a lab whose student files are all GLSL
+      target_link_libraries(${target} INTERFACE stoa)
+    endif()
+  endif()
+  set(${out} ${target} PARENT_SCOPE)
+endfunction()
+
+function(_stoa_lab_program lab target output_dir track_name search_path objects)
+  get_property(app_sources GLOBAL PROPERTY STOA_LAB_${lab}_APP)
+  add_executable(${target} ${app_sources})
+  string(REGEX REPLACE "^([0-9]+)_.*" "\\1" number ${lab})
+  string(REGEX REPLACE "^[0-9]+_" "" short ${lab})
+  set_target_properties(${target} PROPERTIES OUTPUT_NAME lab${number}_${short}
+                                             RUNTIME_OUTPUT_DIRECTORY ${output_dir})
+  string(REPLACE ";" "|" search_path_joined "${search_path}")
+  target_compile_definitions(${target} PRIVATE
+    STOA_LAB_NAME="${lab}"
+    STOA_LAB_TRACK="${track_name}"
+    STOA_LAB_DIR="${STOA_LABS_DIR}/${lab}"
+    STOA_LAB_SHADER_PATH="${search_path_joined}")
+  foreach(object IN LISTS objects)
+    target_link_libraries(${target} PRIVATE ${object})
+  endforeach()
+  target_link_libraries(${target} PRIVATE stoa)
+endfunction()
+
+function(stoa_add_lab)
+  cmake_parse_arguments(ARG "" "NAME" "STUDENT_FILES;APP_SOURCES;USES" ${ARGN})
+  set(lab ${ARG_NAME})
+  set(cpp "")
+  foreach(file IN LISTS ARG_STUDENT_FILES)
+    if(NOT EXISTS ${STOA_LABS_DIR}/${lab}/${file})
+      message(FATAL_ERROR "stoa_add_lab(${lab}): student file labs/${lab}/${file} does not exist")
+    endif()
+    if(EXISTS ${STOA_SOLUTIONS_DIR} AND NOT EXISTS ${STOA_SOLUTIONS_DIR}/${lab}/${file})
+      message(FATAL_ERROR "stoa_add_lab(${lab}): labs/${lab}/${file} has no twin in solutions/${lab}/")
+    endif()
+    if(file MATCHES "\\.cpp$")
+      list(APPEND cpp ${lab}/${file})
+    endif()
+  endforeach()
+  set(app "")
+  foreach(file IN LISTS ARG_APP_SOURCES)
+    list(APPEND app ${STOA_LABS_DIR}/${lab}/${file})
+  endforeach()
+  # Student C++, relative to the track root (labs/ or solutions/).
+  set_property(GLOBAL PROPERTY STOA_LAB_${lab}_CPP ${cpp})
+  set_property(GLOBAL PROPERTY STOA_LAB_${lab}_APP ${app})
+  set_property(GLOBAL PROPERTY STOA_LAB_${lab}_USES ${ARG_USES})
+  set_property(GLOBAL PROPERTY STOA_LAB_${lab}_FILES ${ARG_STUDENT_FILES})
+  set_property(GLOBAL APPEND PROPERTY STOA_LABS ${lab})
+
+  # The main track.
+  set(objects "")
+  foreach(used IN LISTS ARG_USES lab)
+    _stoa_student_objects(object ${used} "" ${STOA_MAIN_TRACK_DIR})
+    list(APPEND objects ${object})
+  endforeach()
+  _stoa_lab_program(${lab} ${lab} ${CMAKE_BINARY_DIR}/bin ${STOA_MAIN_TRACK_NAME}
+                    "${STOA_MAIN_TRACK_DIR};${CMAKE_SOURCE_DIR}/shaders" "${objects}")
+
+  if(NOT STOA_BUILD_EXTRA_TRACKS)
+    return()
+  endif()
+
+  # The stubs, beside the solutions.
+  set(objects "")
+  foreach(used IN LISTS ARG_USES lab)
+    _stoa_student_objects(object ${used} "-stubs" ${STOA_LABS_DIR})
+    list(APPEND objects ${object})
+  endforeach()
+  _stoa_lab_program(${lab} ${lab}-stubs ${CMAKE_BINARY_DIR}/bin/stubs labs
+                    "${STOA_LABS_DIR};${CMAKE_SOURCE_DIR}/shaders" "${objects}")
+
+  # One program per planted mistake.
+  file(GLOB mistakes ${STOA_SOLUTIONS_DIR}/${lab}/mistakes/*.mistake)
+  foreach(mistake_file IN LISTS mistakes)
+    get_filename_component(mistake ${mistake_file} NAME_WE)
+    set(id ${lab}.${mistake})
+    set(overlay ${CMAKE_BINARY_DIR}/mistakes/${id})
+    _stoa_apply_mistake(${mistake_file} ${lab} ${overlay} patched_file)
+    set(objects "")
+    foreach(used IN LISTS ARG_USES)
+      _stoa_student_objects(object ${used} "" ${STOA_SOLUTIONS_DIR})
+      list(APPEND objects ${object})
+    endforeach()
+    # The lab's own student code, with the patched file from the overlay.
+    get_property(lab_cpp GLOBAL PROPERTY STOA_LAB_${lab}_CPP)
+    set(sources "")
+    foreach(file IN LISTS lab_cpp)
+      if(EXISTS ${overlay}/${file})
+        list(APPEND sources ${overlay}/${file})
+      else()
+        list(APPEND sources ${STOA_SOLUTIONS_DIR}/${file})
+      endif()
+    endforeach()
+    if(sources)
+      add_library(stoa_student_${id} OBJECT ${sources})
+      target_link_libraries(stoa_student_${id} PUBLIC stoa)
+      list(APPEND objects stoa_student_${id})
+    endif()
+    _stoa_lab_program(${lab} ${lab}-mistake-${mistake} ${CMAKE_BINARY_DIR}/bin/mistakes/${id} mistake:${mistake}
+                      "${overlay};${STOA_SOLUTIONS_DIR};${CMAKE_SOURCE_DIR}/shaders" "${objects}")
+    set_property(GLOBAL APPEND PROPERTY STOA_MISTAKES ${id})
+  endforeach()
+endfunction()
+
+# A .mistake file:
+#   hint: what the student sees when their image looks like this mistake
+#   docs: labs/01_transforms.md#the-view-matrix
+#   fails: case_a case_b            (cases this mistake must fail)
+#   file: transforms.cpp            (a student file of the lab)
+#   --- find
+#   <exact lines of the solution>
+#   --- replace
+#   <the lines with the mistake>
+#   --- end
+# The text between the markers must occur exactly once in the solution file.
+function(_stoa_apply_mistake mistake_file lab overlay out)
+  file(READ ${mistake_file} text)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${mistake_file})
+  string(REGEX MATCH "(^|\n)file:[ \t]*([^\n]+)" _ "${text}")
+  set(file "${CMAKE_MATCH_2}")
+  string(STRIP "${file}" file)
+  if(file STREQUAL "")
+    message(FATAL_ERROR "${mistake_file}: missing 'file:' line naming the student file to change")
+  endif()
+  set(original ${STOA_SOLUTIONS_DIR}/${lab}/${file})
+  if(NOT EXISTS ${original})
+    message(FATAL_ERROR "${mistake_file}: file: ${file} is not in solutions/${lab}/")
+  endif()
+  string(FIND "${text}" "--- find\n" find_at)
+  string(FIND "${text}" "--- replace\n" replace_at)
+  string(FIND "${text}" "--- end" end_at)
+  if(find_at LESS 0 OR replace_at LESS find_at OR end_at LESS replace_at)
+    message(FATAL_ERROR "${mistake_file}: expected '--- find', '--- replace' and '--- end' blocks, in that order")
+  endif()
+  math(EXPR find_begin "${find_at} + 9")
+  math(EXPR find_length "${replace_at} - ${find_begin}")
+  math(EXPR replace_begin "${replace_at} + 12")
+  math(EXPR replace_length "${end_at} - ${replace_begin}")
+  string(SUBSTRING "${text}" ${find_begin} ${find_length} find)
+  string(SUBSTRING "${text}" ${replace_begin} ${replace_length} replace)
+  file(READ ${original} source)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${original})
+  string(FIND "${source}" "${find}" first)
+  if(first LESS 0)
+    message(FATAL_ERROR "${mistake_file}: the '--- find' text does not occur in solutions/${lab}/${file}; "
+                        "update the mistake to match the solution")
+  endif()
+  string(FIND "${source}" "${find}" last REVERSE)
+  if(NOT first EQUAL last)
+    message(FATAL_ERROR "${mistake_file}: the '--- find' text occurs more than once in solutions/${lab}/${file}")
+  endif()
+  string(REPLACE "${find}" "${replace}" patched "${source}")
+  file(MAKE_DIRECTORY ${overlay}/${lab})
+  # Write only on change, so a reconfigure does not rebuild every mistake.
+  set(target_file ${overlay}/${lab}/${file})
+  if(EXISTS ${target_file})
+    file(READ ${target_file} previous)
+  else()
+    set(previous "")
+  endif()
+  if(NOT previous STREQUAL patched)
+    file(WRITE ${target_file} "${patched}")
+  endif()
+  set(${out} ${target_file} PARENT_SCOPE)
+endfunction()
+
+# Links the student code of every lab of the main track into `target` (tests).
+function(stoa_link_lab_code target)
+  get_property(labs GLOBAL PROPERTY STOA_LABS)
+  foreach(lab IN LISTS labs)
+    target_link_libraries(${target} PRIVATE stoa_student_${lab})
+  endforeach()
+endfunction()

@@ -1,0 +1,62 @@
+#pragma once
+// What a lab app provides: its scene, how a graded case sets it up, and how a
+// frame is drawn. The app lifecycle (command line, window, headless render,
+// shader reload, stub detection) is runLab()'s (LabApp.hpp), the same for every lab.
+
+#include <stoa/app/Input.hpp>
+
+#include <glm/vec2.hpp>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace stoa {
+
+class Camera;
+class CaseSpec;
+class Program;
+
+/// Loads the lab's GL resources and keeps the programs, so the app can reload
+/// them when a file changes and report GLSL stubs that are still in place.
+class LabResources {
+public:
+    explicit LabResources(std::vector<std::filesystem::path> shaderSearchPath);
+    ~LabResources();
+
+    /// Builds a program from two files looked up in the shader search path (the
+    /// track's lab folders first, then shaders/). Throws InputError naming file and line.
+    Program& loadProgram(const std::string& vertexFile, const std::string& fragmentFile);
+
+    const std::vector<std::filesystem::path>& shaderSearchPath() const { return m_searchPath; }
+    const std::vector<std::unique_ptr<Program>>& programs() const { return m_programs; }
+
+private:
+    std::vector<std::filesystem::path> m_searchPath;
+    std::vector<std::unique_ptr<Program>> m_programs;
+};
+
+class Lab {
+public:
+    virtual ~Lab() = default;
+
+    /// A GL context exists: load programs and meshes.
+    virtual void initialize(LabResources& resources) = 0;
+    /// Sets up the scene and camera of a graded case (also when a number key jumps
+    /// to it in the window). Read case keys through `spec`'s getters.
+    virtual void loadCase(const CaseSpec& spec) = 0;
+    /// Draws one frame into the bound framebuffer.
+    virtual void render(glm::ivec2 size) = 0;
+
+    /// The camera the window's mouse and keys drive.
+    virtual Camera& activeCamera() = 0;
+    /// Tab in the window: switch between the orbit and first-person cameras.
+    virtual void toggleCamera() {}
+    /// A key the app did not handle; return true when the lab used it.
+    virtual bool keyPressed(unsigned char key) { (void)key; return false; }
+    /// Lines added to the window's key help, e.g. "f  toggle facet normals".
+    virtual std::vector<std::string> keyHelp() const { return {}; }
+};
+
+} // namespace stoa

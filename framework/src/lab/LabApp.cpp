@@ -1,0 +1,334 @@
+#include <stoa/app/HeadlessContext.hpp>
+#include <stoa/app/Window.hpp>
+#include <stoa/camera/Camera.hpp>
+#include <stoa/core/InputError.hpp>
+#include <stoa/core/NotImplemented.hpp>
+#include <stoa/gl/Debug.hpp>
+#include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/OpenGL.hpp>
+#include <stoa/gl/Program.hpp>
+#include <stoa/image/Image.hpp>
+#include <stoa/lab/CaseManifest.hpp>
+#include <stoa/lab/LabApp.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+namespace stoa {
+
+namespace {
+
+struct Options {
+    bool list = false;
+    bool info = false;
+    bool help = false;
+    std::string renderCase;      // headless
+    std::string output;
+    std::optional<HeadlessBackend> backend;
+    std::string windowCase;      // window
+    std::string screenshot;
+};
+
+/// A GLSL stub still in place, reported like a C++ NotImplemented.
+struct ShaderNotImplemented : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+void printUsage(const LabBuildInfo& info, std::FILE* to) {
+    std::fprintf(to,
+                 "usage: lab%s [--case NAME] [--screenshot FILE]\n"
+                 "       lab%s --render NAME --output FILE.png [--backend osmesa|egl]\n"
+                 "       lab%s --list | --info | --help\n\n"
+                 "Without --render the lab opens a window; see docs/labs/%s.md.\n"
+                 "Exit status: 0 done, 1 error, 2 bad command line, 3 not attempted (a stub is in place).\n",
+                 info.name, info.name, info.name, info.name);
+}
+
+Options parseOptions(int argc, char** argv) {
+    Options options;
+    auto value = [&](int& i) -> std::string {
+        if (i + 1 >= argc) throw InputError("", 0, std::string(argv[i]) + " needs a value");
+        return argv[++i];
+    };
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--list") options.list = true;
+        else if (arg == "--info") options.info = true;
+        else if (arg == "--help" || arg == "-h") options.help = true;
+        else if (arg == "--render") options.renderCase = value(i);
+        else if (arg == "--output") options.output = value(i);
+        else if (arg == "--backend") options.backend = parseHeadlessBackend(value(i));
+        else if (arg == "--case") options.windowCase = value(i);
+        else if (arg == "--screenshot") options.screenshot = value(i);
+        else
+            throw InputError("", 0, "unknown argument '" + arg +
+                                        "' (valid: --case, --screenshot, --render, --output, --backend, --list, "
+                                        "--info, --help)");
+    }
+    if (!options.renderCase.empty() && options.output.empty())
+        throw InputError("", 0, "--render needs --output FILE.png");
+    if (options.renderCase.empty() && (!options.output.empty() || options.backend))
+        throw InputError("", 0, "--output and --backend go with --render");
+    if (!options.renderCase.empty() && (!options.windowCase.empty() || !options.screenshot.empty()))
+        throw InputError("", 0, "--case and --screenshot are for the window; --render renders headless");
+    return options;
+}
+
+std::vector<std::filesystem::path> splitSearchPath(const char* joined) {
+    std::vector<std::filesystem::path> folders;
+    std::stringstream stream(joined);
+    std::string folder;
+    while (std::getline(stream, folder, '|'))
+        if (!folder.empty()) folders.emplace_back(folder);
+    return folders;
+}
+
+const CaseSpec& findCase(const LabManifest& manifest, const std::string& name) {
+    if (const CaseSpec* spec = manifest.find(name)) return *spec;
+    throw InputError(manifest.file, 0, "no case '" + name + "' (cases: " + manifest.caseNames() + ")");
+}
+
+void throwIfShaderStubs(const LabResources& resources) {
+    for (const auto& program : resources.programs()) {
+        if (program->stubs().empty()) continue;
+        const ShaderStub& stub = program->stubs().front();
+        throw ShaderNotImplemented(stub.function + " (" + stub.file + ":" + std::to_string(stub.line) + ")");
+    }
+}
+
+int renderHeadless(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, const Options& options) {
+    const CaseSpec& spec = findCase(manifest, options.renderCase);
+    HeadlessContext context(options.backend);
+    enableDebugOutput();
+    LabResources resources(splitSearchPath(info.shaderPath));
+    lab.initialize(resources);
+    lab.loadCase(spec);
+    spec.requireAllKeysUsed();
+
+    Framebuffer target(spec.width, spec.height, FramebufferOptions{});
+    target.bind();
+    lab.render({spec.width, spec.height});
+    throwIfShaderStubs(resources);
+    Image image = target.readColor();
+    image.savePng(options.output);
+    return kExitOk;
+}
+
+// The interactive app: the lab in a window with the cameras, case jumps and reload.
+class LabWindow : public WindowHandler {
+public:
+    LabWindow(Lab& lab, Window& window, const LabBuildInfo& info, const LabManifest& manifest,
+              LabResources& resources, std::string screenshot)
+        : m_lab(lab), m_window(window), m_info(info), m_manifest(manifest), m_resources(resources),
+          m_screenshot(std::move(screenshot)) {}
+
+    void display(glm::ivec2 size) override {
+        reloadChangedShaders();
+        try {
+            m_lab.render(size);
+            throwIfShaderStubs(m_resources);
+            setStatus("");
+        } catch (const NotImplemented& stub) {
+            showProblem("not implemented: " + stub.function());
+        } catch (const ShaderNotImplemented& stub) {
+            showProblem(std::string("not implemented: ") + stub.what());
+        }
+        if (!m_screenshot.empty() && ++m_framesDrawn == 2) saveScreenshot(size);
+    }
+
+    void update(float seconds, const InputState& input) override { m_lab.activeCamera().update(input, seconds); }
+
+    void mouseDragged(glm::vec2 delta, const InputState& input) override {
+        runStudentCode([&] { m_lab.activeCamera().mouseDragged(input, delta); });
+    }
+
+    void mouseWheel(int notches) override {
+        runStudentCode([&] { m_lab.activeCamera().mouseWheel(notches); });
+    }
+
+    void keyPressed(unsigned char key, const InputState&) override {
+        if (key == 27) {
+            m_window.requestClose();
+        } else if (key >= '1' && key <= '9') {
+            const std::size_t index = static_cast<std::size_t>(key - '1');
+            if (index < m_manifest.cases.size()) {
+                runStudentCode([&] { m_lab.loadCase(m_manifest.cases[index]); });
+                std::printf("case %zu: %s -- %s\n", index + 1, m_manifest.cases[index].name.c_str(),
+                            m_manifest.cases[index].description.c_str());
+            }
+        } else if (key == '\t') {
+            runStudentCode([&] { m_lab.toggleCamera(); });
+        } else if (key == 'h') {
+            printHelp();
+        } else if (!m_lab.keyPressed(key)) {
+            // Unused keys are fine: the cameras read W/A/S/D/C/Space as held keys.
+        }
+        std::fflush(stdout);
+    }
+
+    void printHelp() const {
+        std::printf("Lab %s (%s track)\n"
+                    "  mouse        orbit: left tumble, middle or Shift+left track, right or Ctrl+left dolly, wheel dolly\n"
+                    "               first person: hold right and drag to look\n"
+                    "  W A S D      walk (first person); Space up, C or Ctrl down, Shift faster\n"
+                    "  Tab          switch orbit / first-person camera\n"
+                    "  1..9         jump to a graded case's view\n"
+                    "  h            this help;  Esc quit\n"
+                    "  Shaders reload by themselves when you save them.\n",
+                    m_info.name, m_info.track);
+        for (const std::string& line : m_lab.keyHelp()) std::printf("  %s\n", line.c_str());
+        for (std::size_t i = 0; i < m_manifest.cases.size() && i < 9; ++i)
+            std::printf("  case %zu: %s\n", i + 1, m_manifest.cases[i].name.c_str());
+    }
+
+    int exitCode() const { return m_exitCode; }
+
+private:
+    template <typename Function>
+    void runStudentCode(Function&& function) {
+        try {
+            function();
+        } catch (const NotImplemented& stub) {
+            showProblem("not implemented: " + stub.function());
+        }
+    }
+
+    void showProblem(const std::string& problem) {
+        glClearColor(0.25f, 0.05f, 0.05f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        setStatus(problem);
+        if (!m_screenshot.empty()) m_exitCode = kExitNotAttempted;
+    }
+
+    void setStatus(const std::string& status) {
+        if (status == m_status) return;
+        m_status = status;
+        m_window.setTitle(std::string("Stoa lab ") + m_info.name + (status.empty() ? "" : " -- " + status));
+        if (!status.empty()) std::fprintf(stderr, "stoa: %s\n", status.c_str());
+    }
+
+    void reloadChangedShaders() {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - m_lastReloadCheck < std::chrono::milliseconds(500)) return;
+        m_lastReloadCheck = now;
+        for (const auto& program : m_resources.programs()) {
+            if (program->reloadIfChanged()) std::printf("shaders reloaded\n");
+            else if (!program->lastError().empty() && program->lastError() != m_lastShaderError) {
+                m_lastShaderError = program->lastError();
+                std::fprintf(stderr, "%s\n(keeping the last program that compiled)\n", m_lastShaderError.c_str());
+            }
+        }
+        std::fflush(stdout);
+    }
+
+    void saveScreenshot(glm::ivec2 size) {
+        Image image(size.x, size.y, 4);
+        glReadBuffer(GL_BACK);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+        image.flipVertically();
+        image.savePng(m_screenshot);
+        m_window.requestClose();
+    }
+
+    Lab& m_lab;
+    Window& m_window;
+    const LabBuildInfo& m_info;
+    const LabManifest& m_manifest;
+    LabResources& m_resources;
+    std::string m_screenshot;
+    std::string m_status = "-";
+    std::string m_lastShaderError;
+    std::chrono::steady_clock::time_point m_lastReloadCheck = std::chrono::steady_clock::now();
+    int m_framesDrawn = 0;
+    int m_exitCode = kExitOk;
+};
+
+int runWindow(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, const Options& options, int argc,
+              char** argv) {
+    const CaseSpec& first = options.windowCase.empty() ? manifest.cases.front() : findCase(manifest, options.windowCase);
+    WindowOptions windowOptions;
+    windowOptions.title = std::string("Stoa lab ") + info.name;
+    if (!options.screenshot.empty()) {
+        windowOptions.width = first.width;    // the screenshot matches the headless render
+        windowOptions.height = first.height;
+    }
+    Window window(argc, argv, windowOptions);
+    enableDebugOutput();
+    LabResources resources(splitSearchPath(info.shaderPath));
+    lab.initialize(resources);
+    LabWindow handler(lab, window, info, manifest, resources, options.screenshot);
+    try {
+        lab.loadCase(first);
+        first.requireAllKeysUsed();
+    } catch (const NotImplemented& stub) {
+        std::fprintf(stderr, "stoa: not implemented: %s\n", stub.function().c_str());
+        if (!options.screenshot.empty()) return kExitNotAttempted;
+    }
+    if (options.screenshot.empty()) handler.printHelp();
+    window.run(handler);
+    return handler.exitCode();
+}
+
+} // namespace
+
+LabResources::LabResources(std::vector<std::filesystem::path> shaderSearchPath)
+    : m_searchPath(std::move(shaderSearchPath)) {}
+
+LabResources::~LabResources() = default;
+
+Program& LabResources::loadProgram(const std::string& vertexFile, const std::string& fragmentFile) {
+    m_programs.push_back(std::make_unique<Program>(Program::fromFiles(vertexFile, fragmentFile, m_searchPath)));
+    return *m_programs.back();
+}
+
+int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv) {
+    try {
+        Options options;
+        try {
+            options = parseOptions(argc, argv);
+        } catch (const InputError& error) {
+            std::fprintf(stderr, "lab%s: %s\n", info.name, error.what());
+            printUsage(info, stderr);
+            return kExitUsage;
+        }
+        if (options.help) {
+            printUsage(info, stdout);
+            return kExitOk;
+        }
+        if (options.info) {
+            std::printf("lab=%s\ntrack=%s\n", info.name, info.track);
+            return kExitOk;
+        }
+        const LabManifest manifest = loadManifest(std::filesystem::path(info.labDirectory) / "cases.ini");
+        if (options.list) {
+            for (const CaseSpec& spec : manifest.cases) std::printf("%s\n", spec.name.c_str());
+            return kExitOk;
+        }
+        if (!options.renderCase.empty() && !manifest.find(options.renderCase)) {
+            std::fprintf(stderr, "lab%s: no case '%s' (cases: %s)\n", info.name, options.renderCase.c_str(),
+                         manifest.caseNames().c_str());
+            return kExitUsage;
+        }
+        if (!options.renderCase.empty()) return renderHeadless(lab, info, manifest, options);
+        return runWindow(lab, info, manifest, options, argc, argv);
+    } catch (const NotImplemented& stub) {
+        std::fprintf(stderr, "stoa: not implemented: %s\n", stub.function().c_str());
+        return kExitNotAttempted;
+    } catch (const ShaderNotImplemented& stub) {
+        std::fprintf(stderr, "stoa: not implemented: %s\n", stub.what());
+        return kExitNotAttempted;
+    } catch (const InputError& error) {
+        std::fprintf(stderr, "lab%s: %s\n", info.name, error.what());
+        return kExitError;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "lab%s: %s\n", info.name, error.what());
+        return kExitError;
+    }
+}
+
+} // namespace stoa

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# window_matches_headless.sh LAB_PROGRAM CASE COMPARE_TOOL WORK_DIR
+# Renders CASE in the freeglut window under Xvfb and headless on both backends,
+# and checks that the three images agree within the grader's tolerance.
+set -euo pipefail
+program=$1 case_name=$2 compare=$3 work=$4
+mkdir -p "$work"
+window="$work/$case_name.window.png"
+rm -f "$window"
+xvfb-run -a -s "-screen 0 1280x1024x24" "$program" --case "$case_name" --screenshot "$window"
+for backend in osmesa egl; do
+  headless="$work/$case_name.$backend.png"
+  "$program" --render "$case_name" --output "$headless" --backend "$backend"
+  "$compare" "$window" "$headless"
+done
