@@ -4,6 +4,7 @@
 #include "Report.hpp"
 #include "ResultsJson.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace stoa::grader {
 
@@ -149,8 +150,14 @@ JsonWriter& JsonWriter::value(std::string_view text) {
 JsonWriter& JsonWriter::value(double number) {
     if (!std::isfinite(number)) return null();
     beforeValue();
-    // The shortest of %.1g..%.17g that reads back as the same double.
+    // Whole numbers as integers ("10", not "1e+01"); others as the shortest
+    // of %.1g..%.17g that reads back as the same double.
     char text[40];
+    if (number == std::floor(number) && std::fabs(number) < 1e15) {
+        std::snprintf(text, sizeof text, "%.0f", number);
+        m_text += std::strcmp(text, "-0") == 0 ? "0" : text;
+        return *this;
+    }
     for (int precision = 1; precision <= 17; ++precision) {
         std::snprintf(text, sizeof text, "%.*g", precision, number);
         if (std::strtod(text, nullptr) == number) break;

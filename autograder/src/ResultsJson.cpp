@@ -4,6 +4,7 @@
 
 #include <stoa/core/InputError.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>

@@ -167,3 +167,32 @@ TEST_CASE("shapes::torus lies in the XZ plane with normals away from the tube's 
     CHECK(volume > 0.98f * exactVolume);
     CHECK(volume < exactVolume);
 }
+
+TEST_CASE("shapes close their uv seams exactly", "[geometry][shapes]") {
+    // Every vertex at u = 1 that a triangle uses has a twin at u = 0 in the
+    // very same place, so no crack can open along the seam.
+    auto openSeams = [](const Mesh& mesh) {
+        std::vector<bool> used(mesh.vertices.size(), mesh.indices.empty());
+        for (std::uint32_t index : mesh.indices) used[index] = true;
+        int open = 0;
+        for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+            const Vertex& end = mesh.vertices[i];
+            if (end.uv.x != 1.0f || !used[i]) continue;
+            bool twin = false;
+            for (const Vertex& start : mesh.vertices) {
+                twin = twin || (start.uv.x == 0.0f && start.uv.y == end.uv.y && start.position == end.position);
+            }
+            open += twin ? 0 : 1;
+        }
+        return open;
+    };
+    CHECK(openSeams(shapes::sphere(0.5f, 7, 5)) == 0);
+    CHECK(openSeams(shapes::torus(0.4f, 0.15f, 9, 7)) == 0);
+    const Mesh cylinder = shapes::cylinder(0.5f, 1.0f, 7);
+    Mesh side;  // the caps have no seam; their uvs are a disc
+    for (const Vertex& v : cylinder.vertices) {
+        if (v.normal.y == 0.0f) side.vertices.push_back(v);
+    }
+    CHECK(side.vertices.size() == 16);
+    CHECK(openSeams(side) == 0);
+}

@@ -85,7 +85,8 @@ void computeSmoothNormals(Mesh& mesh) {
     }
     for (std::size_t i = 0; i < sums.size(); ++i) {
         const float length = glm::length(sums[i]);
-        mesh.vertices[i].normal = length > 0.0f && std::isfinite(length) ? sums[i] / length : glm::vec3(0.0f, 1.0f, 0.0f);
+        const bool usable = length > 0.0f && std::isfinite(length);
+        mesh.vertices[i].normal = usable ? sums[i] / length : glm::vec3(0.0f, 1.0f, 0.0f);
     }
 }
 

@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string_view>
 #include <unordered_map>
@@ -88,12 +89,18 @@ float finiteNumber(std::string_view word, const std::string& file, int line) {
     if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
     double value = 0.0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (error == std::errc::result_out_of_range || (error == std::errc() && end == digits.data() + digits.size() &&
-                                                    !std::isfinite(static_cast<float>(value)))) {
+    const bool whole = end == digits.data() + digits.size();
+    if (error == std::errc::result_out_of_range && whole) {
+        // Too small ("1e-999") reads as 0; too large ("1e999") is an error below.
+        const std::size_t exponent = digits.find_first_of("eE");
+        if (exponent != std::string_view::npos && digits.substr(exponent + 1, 1) == "-") return 0.0f;
+    }
+    if ((error == std::errc::result_out_of_range && whole) ||
+        (error == std::errc() && whole && !std::isfinite(static_cast<float>(value)))) {
         throw InputError(file, line, "the number '" + std::string(word) +
                                          "' is not finite (NaN, infinite, or too large for a float)");
     }
-    if (error != std::errc() || end != digits.data() + digits.size()) {
+    if (error != std::errc() || !whole) {
         throw InputError(file, line, "expected a number, found '" + std::string(word) + "'");
     }
     return static_cast<float>(value);
@@ -161,6 +168,7 @@ std::vector<MtlEntry> scanMtl(const fs::path& mtlPath, const std::string& text) 
             if (entry && key == "Kd") entry->diffuse = colour;
             if (entry && key == "Ks") entry->specular = colour;
         } else {
+            if (key == "d" && words.size() > 1 && words[1] == "-halo") words.erase(words.begin() + 1);
             const float value = numbers(words, 1, 1, "one number", file, line)[0];
             if (entry && key == "Ns") entry->shininess = value;
         }
@@ -220,13 +228,14 @@ ObjScan scanObj(const fs::path& path, const std::string& text) {
     const std::string file = path.string();
     ObjScan scan;
     int positions = 0, uvs = 0, normals = 0;
-    std::map<std::string, int> loadedMtlFiles;  // mtllib name -> line, each file read once (as tinyobjloader does)
+    std::set<std::string> loadedMtlFiles;  // each MTL file is read once, as tinyobjloader does
 
     forEachLine(text, [&](int line, const std::string&, std::vector<std::string_view> words) {
         const std::string_view key = words[0];
         if (key == "f") {
             if (words.size() < 4) {
-                throw InputError(file, line, "a face needs at least 3 corners, found " + std::to_string(words.size() - 1));
+                throw InputError(file, line,
+                                 "a face needs at least 3 corners, found " + std::to_string(words.size() - 1));
             }
             for (std::size_t i = 1; i < words.size(); ++i) checkCorner(words[i], positions, uvs, normals, file, line);
             ++scan.faceCount;
@@ -260,7 +269,7 @@ ObjScan scanObj(const fs::path& path, const std::string& text) {
                                                  " does not exist or cannot be read (MTL files are looked for "
                                                  "next to the OBJ file)");
             }
-            loadedMtlFiles[name] = line;
+            loadedMtlFiles.insert(name);
             for (MtlEntry& entry : scanMtl(mtlPath, *mtlText)) scan.materials.push_back(std::move(entry));
         } else if (key == "usemtl") {
             if (words.size() < 2) throw InputError(file, line, "usemtl needs a material name");
@@ -268,9 +277,9 @@ ObjScan scanObj(const fs::path& path, const std::string& text) {
             bool defined = false;
             for (const MtlEntry& entry : scan.materials) defined = defined || entry.name == name;
             if (!defined) {
-                throw InputError(file, line, "usemtl names material '" + name + "', but " +
-                                                 (loadedMtlFiles.empty() ? std::string("no mtllib line comes before it")
-                                                                         : "no MTL file named by an earlier mtllib defines it"));
+                const std::string reason = loadedMtlFiles.empty() ? "no mtllib line comes before it"
+                                                                  : "no MTL file named by an earlier mtllib defines it";
+                throw InputError(file, line, "usemtl names material '" + name + "', but " + reason);
             }
             scan.usedMaterials.emplace_back(name, line);
         }
@@ -339,6 +348,10 @@ struct PartBuilder {
     std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> vertexOf;
 };
 
+glm::vec3 position(const tinyobj::attrib_t& attrib, std::size_t index) {
+    return {attrib.vertices[3 * index], attrib.vertices[3 * index + 1], attrib.vertices[3 * index + 2]};
+}
+
 /// The normal the file gives a corner, normalized; nullopt when it gives none
 /// (or one of zero length).
 std::optional<glm::vec3> fileNormal(const tinyobj::attrib_t& attrib, int index) {
@@ -359,7 +372,7 @@ std::vector<glm::vec3> smoothNormalsByPosition(const tinyobj::attrib_t& attrib,
     Mesh positions;
     positions.vertices.resize(attrib.vertices.size() / 3);
     for (std::size_t i = 0; i < positions.vertices.size(); ++i) {
-        positions.vertices[i].position = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]};
+        positions.vertices[i].position = position(attrib, i);
     }
     for (const tinyobj::shape_t& shape : shapes) {
         std::size_t offset = 0;
@@ -376,6 +389,76 @@ std::vector<glm::vec3> smoothNormalsByPosition(const tinyobj::attrib_t& attrib,
     std::vector<glm::vec3> normals;
     for (const Vertex& vertex : positions.vertices) normals.push_back(vertex.normal);
     return normals;
+}
+
+/// Gathers tinyobjloader's triangles into one part per material, in the order
+/// the file first uses each material.
+std::vector<ModelPart> buildParts(const tinyobj::ObjReader& reader, const std::vector<MtlEntry>& mtlEntries) {
+    const tinyobj::attrib_t& attrib = reader.GetAttrib();
+    const std::vector<tinyobj::shape_t>& shapes = reader.GetShapes();
+    const std::vector<tinyobj::material_t>& materials = reader.GetMaterials();
+
+    bool anyMissingNormal = false;
+    for (const tinyobj::shape_t& shape : shapes) {
+        for (const tinyobj::index_t& corner : shape.mesh.indices) {
+            anyMissingNormal = anyMissingNormal || !fileNormal(attrib, corner.normal_index);
+        }
+    }
+    const std::vector<glm::vec3> smoothNormals =
+        anyMissingNormal ? smoothNormalsByPosition(attrib, shapes) : std::vector<glm::vec3>();
+
+    std::vector<PartBuilder> builders;
+    std::map<int, std::size_t> builderOfMaterial;  // tinyobjloader material id (-1 = none) -> index in builders
+    auto builderFor = [&](int materialId) -> PartBuilder& {
+        if (materialId < 0 || materialId >= static_cast<int>(materials.size())) materialId = -1;
+        const auto found = builderOfMaterial.find(materialId);
+        if (found != builderOfMaterial.end()) return builders[found->second];
+        builderOfMaterial.emplace(materialId, builders.size());
+        builders.emplace_back();
+        if (materialId >= 0) {
+            builders.back().part.material = makeMaterial(materials[std::size_t(materialId)], mtlEntries);
+        }
+        return builders.back();
+    };
+
+    for (const tinyobj::shape_t& shape : shapes) {
+        std::size_t offset = 0;
+        for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
+            const int materialId = face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
+            PartBuilder& builder = builderFor(materialId);
+            auto vertexFor = [&](const tinyobj::index_t& corner) {
+                const CornerKey key{corner.vertex_index, corner.normal_index, corner.texcoord_index};
+                const auto existing = builder.vertexOf.find(key);
+                if (existing != builder.vertexOf.end()) return existing->second;
+                Vertex vertex;
+                const std::size_t p = std::size_t(corner.vertex_index);
+                vertex.position = position(attrib, p);
+                const std::optional<glm::vec3> normal = fileNormal(attrib, corner.normal_index);
+                vertex.normal = normal ? *normal : smoothNormals[p];  // computed when any normal is missing
+                if (corner.texcoord_index >= 0) {
+                    const std::size_t t = std::size_t(corner.texcoord_index);
+                    vertex.uv = {attrib.texcoords[2 * t], attrib.texcoords[2 * t + 1]};
+                }
+                const auto index = static_cast<std::uint32_t>(builder.part.mesh.vertices.size());
+                builder.part.mesh.vertices.push_back(vertex);
+                builder.vertexOf.emplace(key, index);
+                return index;
+            };
+            const std::size_t cornerCount = shape.mesh.num_face_vertices[face];
+            for (std::size_t k = 1; k + 1 < cornerCount; ++k) {  // tinyobjloader gives triangles; a fan otherwise
+                for (std::size_t corner : {offset, offset + k, offset + k + 1}) {
+                    builder.part.mesh.indices.push_back(vertexFor(shape.mesh.indices[corner]));
+                }
+            }
+            offset += cornerCount;
+        }
+    }
+
+    std::vector<ModelPart> parts;
+    for (PartBuilder& builder : builders) {
+        if (!builder.part.mesh.indices.empty()) parts.push_back(std::move(builder.part));
+    }
+    return parts;
 }
 
 } // namespace
@@ -396,81 +479,20 @@ Model loadObj(const fs::path& path) {
     config.vertex_color = false;
     config.mtl_search_path = path.parent_path().string();
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(file, config)) throw tinyobjError(file, reader.Error());
-    if (!reader.Error().empty()) throw tinyobjError(file, reader.Error());
-
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
-    const std::vector<tinyobj::shape_t>& shapes = reader.GetShapes();
-    const std::vector<tinyobj::material_t>& materials = reader.GetMaterials();
+    if (!reader.ParseFromFile(file, config) || !reader.Error().empty()) throw tinyobjError(file, reader.Error());
 
     // The scan saw every usemtl name defined; make sure tinyobjloader loaded it too.
     for (const auto& [name, line] : scan.usedMaterials) {
         bool loaded = false;
-        for (const tinyobj::material_t& material : materials) loaded = loaded || material.name == name;
+        for (const tinyobj::material_t& material : reader.GetMaterials()) loaded = loaded || material.name == name;
         if (!loaded) throw InputError(file, line, "material '" + name + "' could not be loaded from its MTL file");
-    }
-
-    bool anyMissingNormal = false;
-    for (const tinyobj::shape_t& shape : shapes) {
-        for (const tinyobj::index_t& corner : shape.mesh.indices) {
-            anyMissingNormal = anyMissingNormal || !fileNormal(attrib, corner.normal_index);
-        }
-    }
-    const std::vector<glm::vec3> smoothNormals =
-        anyMissingNormal ? smoothNormalsByPosition(attrib, shapes) : std::vector<glm::vec3>();
-
-    std::vector<PartBuilder> builders;
-    std::map<int, std::size_t> builderOfMaterial;  // tinyobjloader material id (-1 = none) -> index in builders
-    for (const tinyobj::shape_t& shape : shapes) {
-        std::size_t offset = 0;
-        for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
-            const std::size_t cornerCount = shape.mesh.num_face_vertices[face];
-            int materialId = face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
-            if (materialId < 0 || materialId >= static_cast<int>(materials.size())) materialId = -1;
-
-            auto found = builderOfMaterial.find(materialId);
-            if (found == builderOfMaterial.end()) {
-                found = builderOfMaterial.emplace(materialId, builders.size()).first;
-                builders.emplace_back();
-                if (materialId >= 0) builders.back().part.material = makeMaterial(materials[std::size_t(materialId)], scan.materials);
-            }
-            PartBuilder& builder = builders[found->second];
-
-            auto vertexFor = [&](const tinyobj::index_t& corner) {
-                const CornerKey key{corner.vertex_index, corner.normal_index, corner.texcoord_index};
-                const auto existing = builder.vertexOf.find(key);
-                if (existing != builder.vertexOf.end()) return existing->second;
-                Vertex vertex;
-                const std::size_t p = std::size_t(corner.vertex_index);
-                vertex.position = {attrib.vertices[3 * p], attrib.vertices[3 * p + 1], attrib.vertices[3 * p + 2]};
-                const std::optional<glm::vec3> normal = fileNormal(attrib, corner.normal_index);
-                vertex.normal = normal ? *normal : smoothNormals[p];  // smoothNormals exists when a normal is missing
-                if (corner.texcoord_index >= 0) {
-                    const std::size_t t = std::size_t(corner.texcoord_index);
-                    vertex.uv = {attrib.texcoords[2 * t], attrib.texcoords[2 * t + 1]};
-                }
-                const auto index = static_cast<std::uint32_t>(builder.part.mesh.vertices.size());
-                builder.part.mesh.vertices.push_back(vertex);
-                builder.vertexOf.emplace(key, index);
-                return index;
-            };
-            for (std::size_t k = 1; k + 1 < cornerCount; ++k) {  // tinyobjloader gives triangles; a fan otherwise
-                for (std::size_t corner : {offset, offset + k, offset + k + 1}) {
-                    builder.part.mesh.indices.push_back(vertexFor(shape.mesh.indices[corner]));
-                }
-            }
-            offset += cornerCount;
-        }
     }
 
     Model model;
     model.source = file;
-    for (PartBuilder& builder : builders) {
-        if (builder.part.mesh.indices.empty()) continue;
-        builder.part.mesh.validate(file);
-        model.parts.push_back(std::move(builder.part));
-    }
-    if (model.parts.empty()) throw InputError(file, 0, "the file has no faces with 3 or more distinct corners");
+    model.parts = buildParts(reader, scan.materials);
+    if (model.parts.empty()) throw InputError(file, 0, "tinyobjloader found no faces in the file");
+    for (const ModelPart& part : model.parts) part.mesh.validate(file);
     return model;
 }
 

@@ -29,12 +29,12 @@ void addTriangle(Mesh& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c) 
 //   c --- d      row r + 1
 void addGrid(Mesh& mesh, std::uint32_t first, int columns, int rows) {
     const std::uint32_t stride = static_cast<std::uint32_t>(columns) + 1;
-    for (int r = 0; r < rows; ++r) {
-        for (int c = 0; c < columns; ++c) {
-            const std::uint32_t a = first + static_cast<std::uint32_t>(r) * stride + static_cast<std::uint32_t>(c);
-            const std::uint32_t b = a + 1, cc = a + stride, d = cc + 1;
-            addTriangle(mesh, a, cc, b);
-            addTriangle(mesh, b, cc, d);
+    for (int row = 0; row < rows; ++row) {
+        for (int column = 0; column < columns; ++column) {
+            const std::uint32_t a = first + static_cast<std::uint32_t>(row) * stride + static_cast<std::uint32_t>(column);
+            const std::uint32_t b = a + 1, c = a + stride, d = c + 1;
+            addTriangle(mesh, a, c, b);
+            addTriangle(mesh, b, c, d);
         }
     }
 }
@@ -79,7 +79,8 @@ Mesh cube(float size) {
     for (const Face& face : faces) {
         const std::uint32_t first = indexOf(mesh.vertices.size());
         for (const glm::vec2& uv : corners) {
-            const glm::vec3 position = half * (face.normal + (2.0f * uv.x - 1.0f) * face.right + (2.0f * uv.y - 1.0f) * face.up);
+            const glm::vec2 offset = 2.0f * uv - 1.0f;  // the corner in [-1, 1]^2 on the face
+            const glm::vec3 position = half * (face.normal + offset.x * face.right + offset.y * face.up);
             mesh.vertices.push_back({position, face.normal, uv});
         }
         addTriangle(mesh, first, first + 1, first + 2);
@@ -103,7 +104,7 @@ Mesh sphere(float radius, int slices, int stacks) {
         const float v = 1.0f - float(stack) / float(stacks);
         const bool pole = stack == 0 || stack == stacks;
         for (int slice = 0; slice <= slices; ++slice) {
-            const float phi = glm::two_pi<float>() * float(slice) / float(slices);
+            const float phi = glm::two_pi<float>() * float(slice % slices) / float(slices);  // the seam matches exactly
             glm::vec3 normal{std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi)};
             if (pole) normal = {0.0f, stack == 0 ? 1.0f : -1.0f, 0.0f};
             mesh.vertices.push_back({radius * normal, normal, {float(slice) / float(slices), v}});
@@ -139,7 +140,7 @@ Mesh cylinder(float radius, float height, int slices) {
     Mesh mesh;
     const float halfHeight = 0.5f * height;
     auto direction = [&](int slice) {  // unit vector in the XZ plane, +Z at slice 0, turning toward +X
-        const float phi = glm::two_pi<float>() * float(slice) / float(slices);
+        const float phi = glm::two_pi<float>() * float(slice % slices) / float(slices);
         return glm::vec3(std::sin(phi), 0.0f, std::cos(phi));
     };
 
@@ -147,8 +148,8 @@ Mesh cylinder(float radius, float height, int slices) {
     for (int row = 0; row <= 1; ++row) {
         for (int slice = 0; slice <= slices; ++slice) {
             const glm::vec3 normal = direction(slice);
-            mesh.vertices.push_back({radius * normal + glm::vec3(0.0f, row == 0 ? halfHeight : -halfHeight, 0.0f), normal,
-                                     {float(slice) / float(slices), row == 0 ? 1.0f : 0.0f}});
+            const glm::vec3 position = radius * normal + glm::vec3(0.0f, row == 0 ? halfHeight : -halfHeight, 0.0f);
+            mesh.vertices.push_back({position, normal, {float(slice) / float(slices), row == 0 ? 1.0f : 0.0f}});
         }
     }
     addGrid(mesh, 0, slices, 1);
@@ -162,7 +163,8 @@ Mesh cylinder(float radius, float height, int slices) {
         mesh.vertices.push_back({halfHeight * normal, normal, {0.5f, 0.5f}});
         for (int slice = 0; slice < slices; ++slice) {
             const glm::vec3 d = direction(slice);
-            mesh.vertices.push_back({radius * d + halfHeight * normal, normal, {0.5f + 0.5f * d.x, 0.5f - 0.5f * side * d.z}});
+            const glm::vec2 uv{0.5f + 0.5f * d.x, 0.5f - 0.5f * side * d.z};
+            mesh.vertices.push_back({radius * d + halfHeight * normal, normal, uv});
         }
         for (int slice = 0; slice < slices; ++slice) {
             const std::uint32_t current = centre + 1 + static_cast<std::uint32_t>(slice);
@@ -189,11 +191,11 @@ Mesh torus(float majorRadius, float minorRadius, int majorSegments, int minorSeg
     Mesh mesh;
     for (int major = 0; major <= majorSegments; ++major) {
         const float u = float(major) / float(majorSegments);
-        const float phi = glm::two_pi<float>() * u;
+        const float phi = glm::two_pi<float>() * float(major % majorSegments) / float(majorSegments);
         const glm::vec3 radial{std::sin(phi), 0.0f, std::cos(phi)};
         for (int minor = 0; minor <= minorSegments; ++minor) {
             const float v = float(minor) / float(minorSegments);
-            const float theta = glm::two_pi<float>() * v;
+            const float theta = glm::two_pi<float>() * float(minor % minorSegments) / float(minorSegments);
             const glm::vec3 normal = std::cos(theta) * radial + glm::vec3(0.0f, std::sin(theta), 0.0f);
             mesh.vertices.push_back({majorRadius * radial + minorRadius * normal, normal, {u, v}});
         }

@@ -55,8 +55,10 @@ Image Image::load(const std::filesystem::path& path, int desiredChannels) {
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(name.c_str(), "rb"));
     if (!file) throw InputError(name, 0, "cannot open file");
 
+    // Decode with the file's own channels and convert here, so that load(path, 1)
+    // gives the same grey as converted(1) (stb_image would use Rec. 601 weights).
     int width = 0, height = 0, fileChannels = 0;
-    stbi_uc* decoded = stbi_load_from_file(file.get(), &width, &height, &fileChannels, desiredChannels);
+    stbi_uc* decoded = stbi_load_from_file(file.get(), &width, &height, &fileChannels, 0);
     if (!decoded) {
         const char* reason = stbi_failure_reason();
         throw InputError(name, 0, std::string("not a PNG, BMP, PGM/PPM, TGA or JPG image (stb_image: ") +
@@ -67,9 +69,9 @@ Image Image::load(const std::filesystem::path& path, int desiredChannels) {
     Image image;
     image.m_width = width;
     image.m_height = height;
-    image.m_channels = desiredChannels != 0 ? desiredChannels : fileChannels;
-    const std::size_t size = static_cast<std::size_t>(width) * height * image.m_channels;
-    image.m_pixels.assign(decoded, decoded + size);
+    image.m_channels = fileChannels;
+    image.m_pixels.assign(decoded, decoded + static_cast<std::size_t>(width) * height * fileChannels);
+    if (desiredChannels != 0 && desiredChannels != fileChannels) return image.converted(desiredChannels);
     return image;
 }
 

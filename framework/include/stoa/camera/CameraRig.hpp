@@ -15,6 +15,8 @@
 #include <stoa/camera/FirstPersonCamera.hpp>
 #include <stoa/camera/OrbitCamera.hpp>
 
+#include <string>
+
 namespace stoa {
 
 class CaseSpec;

@@ -13,7 +13,7 @@
 
 #include <cstdio>
 
-namespace stoa::gl {
+namespace stoa {
 
 /// Asks the driver for debug messages (GL_KHR_debug, else GL_ARB_debug_output)
 /// and prints those of medium or high severity to `out`, each distinct message
@@ -25,13 +25,13 @@ bool checkedMode();
 void setCheckedMode(bool on);
 
 /// "GL_INVALID_OPERATION" and friends; "GL error 0x...." for unknown codes.
-const char* errorName(GLenum error);
+const char* glErrorName(GLenum error);
 
 /// Reads every pending glGetError and, if there was one, throws
 /// std::runtime_error("what (file.cpp:line): GL_INVALID_ENUM[, ...]").
 /// `file` may be a full path: only its last component is shown. Runs
 /// whether or not checked mode is on; the macros below test the mode first.
-void checkErrors(const char* what, const char* file, int line);
+void checkGlErrors(const char* what, const char* file, int line);
 
 namespace detail {
 /// Checked mode, before a call: an error already pending came from an earlier,
@@ -41,20 +41,20 @@ void checkBeforeCall(const char* callText, const char* file, int line);
 void checkAfterCall(const char* callText, const char* file, int line);
 } // namespace detail
 
-} // namespace stoa::gl
+} // namespace stoa
 
 /// Checks for GL errors left by the calls before it (in checked mode only).
 #define STOA_GL_CHECK(what)                                                               \
     do {                                                                                  \
-        if (::stoa::gl::checkedMode()) ::stoa::gl::checkErrors(what, __FILE__, __LINE__); \
+        if (::stoa::checkedMode()) ::stoa::checkGlErrors(what, __FILE__, __LINE__); \
     } while (false)
 
 /// Makes a GL call and, in checked mode, throws naming it if it failed.
 /// For a call whose result is needed, write the call, then STOA_GL_CHECK("glMapBuffer").
 #define STOA_GL_CALL(call)                                                                         \
     do {                                                                                           \
-        const bool stoaGlChecked = ::stoa::gl::checkedMode();                                      \
-        if (stoaGlChecked) ::stoa::gl::detail::checkBeforeCall(#call, __FILE__, __LINE__);         \
+        const bool stoaGlChecked = ::stoa::checkedMode();                                      \
+        if (stoaGlChecked) ::stoa::detail::checkBeforeCall(#call, __FILE__, __LINE__);         \
         call;                                                                                      \
-        if (stoaGlChecked) ::stoa::gl::detail::checkAfterCall(#call, __FILE__, __LINE__);          \
+        if (stoaGlChecked) ::stoa::detail::checkAfterCall(#call, __FILE__, __LINE__);          \
     } while (false)

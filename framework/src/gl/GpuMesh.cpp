@@ -1,0 +1,42 @@
+#include <stoa/gl/GpuMesh.hpp>
+
+#include <stoa/core/Assert.hpp>
+#include <stoa/geometry/Mesh.hpp>
+#include <stoa/gl/Debug.hpp>
+
+#include <cstddef>
+
+namespace stoa {
+
+GpuMesh::GpuMesh(const Mesh& mesh) : m_indexCount(mesh.indices.size()), m_vertexCount(mesh.vertices.size()) {
+    m_vertices.upload(mesh.vertices);
+    m_vertexArray.attribute(kPositionLocation, m_vertices, 3, GL_FLOAT, sizeof(Vertex), offsetof(Vertex, position));
+    m_vertexArray.attribute(kNormalLocation, m_vertices, 3, GL_FLOAT, sizeof(Vertex), offsetof(Vertex, normal));
+    m_vertexArray.attribute(kUvLocation, m_vertices, 2, GL_FLOAT, sizeof(Vertex), offsetof(Vertex, uv));
+    if (m_indexCount > 0) {
+        m_indices.upload(mesh.indices);
+        m_vertexArray.elementBuffer(m_indices);
+    }
+    VertexArray::unbind();
+}
+
+void GpuMesh::draw() const { drawInstanced(1); }
+
+void GpuMesh::drawInstanced(int instances) const {
+    STOA_ASSERT(m_vertexArray.id() != 0, "GpuMesh::draw(): the mesh was moved from. Draw the GpuMesh it moved to.");
+    m_vertexArray.bind();
+    const auto vertices = static_cast<GLsizei>(m_vertexCount);
+    const auto indices = static_cast<GLsizei>(m_indexCount);
+    if (instances == 1) {
+        if (m_indexCount > 0)
+            STOA_GL_CALL(glDrawElements(GL_TRIANGLES, indices, GL_UNSIGNED_INT, nullptr));
+        else
+            STOA_GL_CALL(glDrawArrays(GL_TRIANGLES, 0, vertices));
+    } else if (m_indexCount > 0) {
+        STOA_GL_CALL(glDrawElementsInstanced(GL_TRIANGLES, indices, GL_UNSIGNED_INT, nullptr, instances));
+    } else {
+        STOA_GL_CALL(glDrawArraysInstanced(GL_TRIANGLES, 0, vertices, instances));
+    }
+}
+
+} // namespace stoa

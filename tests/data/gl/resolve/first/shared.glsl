@@ -1,0 +1,2 @@
+// first/shared.glsl: the first search-path folder wins
+const int sharedFrom = 1;

@@ -1,0 +1,2 @@
+// second/shared.glsl: loses to first/shared.glsl
+const int sharedFrom = 2;

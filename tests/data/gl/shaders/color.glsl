@@ -1,0 +1,6 @@
+// The colour of solid.frag, from a uniform.
+uniform vec4 uColor;
+
+vec4 solidColor() {
+    return uColor;
+}

@@ -1,0 +1,181 @@
+// One case graded end to end, with a shell script as the "lab program": it
+// copies a prepared PNG to the --output path, or misbehaves on purpose.
+
+#include "catch.hpp"
+
+#include "CaseRunner.hpp"
+#include "Grader.hpp"
+#include "TempFolder.hpp"
+
+#include <stoa/image/Image.hpp>
+
+using namespace stoa::grader;
+using stoa::Image;
+
+namespace {
+
+Image gradient(int width, int height, int shift = 0) {
+    Image image(width, height, 4);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            image.setPixel(x, y, {static_cast<std::uint8_t>((x * 16 + shift) & 255),
+                                  static_cast<std::uint8_t>(y * 16), 128, 255});
+    return image;
+}
+
+struct Fixture {
+    stoa::test::TempFolder folder;
+    RunSettings settings;
+
+    Fixture() { settings.limits = defaultLimits(5.0); }
+
+    // A lab program whose body runs with $2 = case name and $4 = output path.
+    std::filesystem::path program(const std::string& name, const std::string& body) {
+        return folder.write("bin/" + name, "#!/bin/sh\n" + body + "\n", true);
+    }
+
+    CaseJob job(const std::filesystem::path& program, const std::string& reference = "reference.png") {
+        CaseJob job;
+        job.lab = "01_transforms";
+        job.program = program;
+        job.spec.name = "orbit_front";
+        job.spec.width = 16;
+        job.spec.height = 16;
+        job.spec.points = 10;
+        job.reference = folder.path() / reference;
+        job.workDir = folder.path() / "work" / job.lab / job.spec.name;
+        return job;
+    }
+};
+
+} // namespace
+
+TEST_CASE("gradeCase: an image that matches the reference passes and earns the points", "[grader][case]") {
+    Fixture fixture;
+    gradient(16, 16).savePng(fixture.folder.path() / "reference.png");
+    gradient(16, 16).savePng(fixture.folder.path() / "student.png");
+    auto program = fixture.program("lab01_transforms", "cp '" + (fixture.folder.path() / "student.png").string() +
+                                                           "' \"$4\"");
+    GradeResult result = gradeCase(fixture.job(program), fixture.settings);
+    CHECK(result.status == GradeStatus::Passed);
+    CHECK(result.points == 10);
+    CHECK(result.maxPoints == 10);
+    CHECK(result.fullName() == "01_transforms/orbit_front");
+    CHECK(result.renderedImage == fixture.folder.path() / "work/01_transforms/orbit_front/rendered.png");
+    CHECK(result.heatMapImage.empty());
+}
+
+TEST_CASE("gradeCase: an image that differs fails and leaves a heat map", "[grader][case]") {
+    Fixture fixture;
+    gradient(16, 16).savePng(fixture.folder.path() / "reference.png");
+    gradient(16, 16, 128).savePng(fixture.folder.path() / "student.png");
+    auto program = fixture.program("lab01_transforms", "cp '" + (fixture.folder.path() / "student.png").string() +
+                                                           "' \"$4\"");
+    GradeResult result = gradeCase(fixture.job(program), fixture.settings);
+    CHECK(result.status == GradeStatus::Failed);
+    CHECK(result.points == 0);
+    CHECK_FALSE(result.reason.empty());
+    REQUIRE_FALSE(result.heatMapImage.empty());
+    CHECK(Image::load(result.heatMapImage).width() == 16);
+    CHECK(std::filesystem::exists(result.renderedImage));
+}
+
+TEST_CASE("gradeCase: each way a render can go wrong has its status and reason", "[grader][case]") {
+    Fixture fixture;
+    gradient(16, 16).savePng(fixture.folder.path() / "reference.png");
+    gradient(8, 4).savePng(fixture.folder.path() / "small.png");
+
+    SECTION("exit 3 is not attempted, with the stub's name") {
+        auto program = fixture.program("stub", "echo 'stoa: not implemented: Camera::viewMatrix()' >&2; exit 3");
+        GradeResult result = gradeCase(fixture.job(program), fixture.settings);
+        CHECK(result.status == GradeStatus::NotAttempted);
+        CHECK(result.reason == "not implemented: Camera::viewMatrix()");
+        CHECK(result.points == 0);
+    }
+    SECTION("a crash names the signal") {
+        auto program = fixture.program("crash", "kill -SEGV $$");
+        GradeResult result = gradeCase(fixture.job(program), fixture.settings);
+        CHECK(result.status == GradeStatus::Error);
+        CHECK(result.reason.find("crashed with SIGSEGV") != std::string::npos);
+    }
+    SECTION("a nonzero exit quotes the last line") {
+        auto program = fixture.program("fails", "echo 'shaders/x.glsl:3: syntax error' >&2; exit 1");
+        GradeResult result = gradeCase(fixture.job(program), fixture.settings);
+        CHECK(result.status == GradeStatus::Error);
+        CHECK(result.reason == "exited with status 1: shaders/x.glsl:3: syntax error");
+    }
+    SECTION("a timeout") {
+        fixture.settings.limits = defaultLimits(1.0);
+        auto program = fixture.program("slow", "sleep 20");
+        GradeResult result = gradeCase(fixture.job(program), fixture.settings);
+        CHECK(result.status == GradeStatus::Error);
+        CHECK(result.reason == "timed out after 1 s");
+    }
+    SECTION("no image written") {
+        auto program = fixture.program("lazy", "exit 0");
+        GradeResult result = gradeCase(fixture.job(program), fixture.settings);
+        CHECK(result.status == GradeStatus::Error);
+        CHECK(result.reason.find("wrote no image") != std::string::npos);
+    }
+    SECTION("an image that does not decode") {
+        auto program = fixture.program("garbage", "echo 'not a png' > \"$4\"");
+        GradeResult result = gradeCase(fixture.job(program), fixture.settings);
+        CHECK(result.status == GradeStatus::Error);
+        CHECK(result.reason.find("does not decode") != std::string::npos);
+    }
+    SECTION("the wrong size") {
+        auto program = fixture.program("small", "cp '" + (fixture.folder.path() / "small.png").string() + "' \"$4\"");
+        GradeResult result = gradeCase(fixture.job(program), fixture.settings);
+        CHECK(result.status == GradeStatus::Error);
+        CHECK(result.reason == "rendered 8x4, expected 16x16");
+    }
+    SECTION("no reference image") {
+        gradient(16, 16).savePng(fixture.folder.path() / "student.png");
+        auto program = fixture.program("good", "cp '" + (fixture.folder.path() / "student.png").string() + "' \"$4\"");
+        GradeResult result = gradeCase(fixture.job(program, "missing.png"), fixture.settings);
+        CHECK(result.status == GradeStatus::NoReference);
+        CHECK(result.reason ==
+              "no reference image: run stoa-grade --update-references from a solutions build");
+        CHECK(result.points == 0);
+    }
+    SECTION("a program that is not there") {
+        GradeResult result = gradeCase(fixture.job(fixture.folder.path() / "bin/none"), fixture.settings);
+        CHECK(result.status == GradeStatus::Error);
+        CHECK(result.reason.find("could not start") != std::string::npos);
+    }
+}
+
+TEST_CASE("gradeCase: the program gets --render, --output and --backend", "[grader][case]") {
+    Fixture fixture;
+    fixture.settings.backend = "egl";
+    auto program = fixture.program("args", "echo \"$@\" > args.txt; exit 3");
+    CaseJob job = fixture.job(program);
+    gradeCase(job, fixture.settings);
+    std::ifstream file(job.workDir / "args.txt");
+    std::string line;
+    std::getline(file, line);
+    CHECK(line == "--render orbit_front --output " + (job.workDir / "rendered.png").string() + " --backend egl");
+}
+
+TEST_CASE("gradeCases keeps the order of the jobs and reports progress", "[grader][case]") {
+    Fixture fixture;
+    auto program = fixture.program("stub", "sleep 0.$(( $(echo \"$2\" | wc -c) % 3 )); exit 3");
+    std::vector<CaseJob> jobs;
+    for (const char* name : {"a", "bb", "ccc", "dddd"}) {
+        CaseJob job = fixture.job(program);
+        job.spec.name = name;
+        job.workDir = fixture.folder.path() / "work" / name;
+        jobs.push_back(job);
+    }
+    std::vector<std::string> lines;
+    std::vector<GradeResult> results = gradeCases(jobs, fixture.settings, 3,
+        [&](const GradeResult& result, std::size_t done, std::size_t total) {
+            lines.push_back(progressLine(result, done, total));
+        });
+    REQUIRE(results.size() == 4);
+    CHECK(results[0].caseName == "a");
+    CHECK(results[3].caseName == "dddd");
+    REQUIRE(lines.size() == 4);
+    CHECK(lines.back().rfind("[4/4] 01_transforms/", 0) == 0);
+    CHECK(lines.back().find(" ... not attempted (") != std::string::npos);
+}

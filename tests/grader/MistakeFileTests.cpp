@@ -1,0 +1,136 @@
+// .mistake headers, and judging whether a mistake is caught.
+
+#include "catch.hpp"
+
+#include "MistakeCheck.hpp"
+#include "MistakeFile.hpp"
+#include "TempFolder.hpp"
+
+#include <stoa/core/InputError.hpp>
+
+using namespace stoa::grader;
+
+namespace {
+
+const char* const kMistake =
+    "# a planted mistake\n"
+    "hint: the view matrix is transposed: the scene turns the wrong way\n"
+    "docs: labs/01_transforms.md#the-view-matrix\n"
+    "fails:  orbit_front   orbit_side\n"
+    "\n"
+    "file: transforms.cpp\n"
+    "--- find\n"
+    "    return view;\n"
+    "--- replace\n"
+    "hint: not a header line any more\n"
+    "--- end\n";
+
+// The InputError's message for parsing `text` as "x.mistake".
+stoa::InputError parseError(const std::string& text) {
+    try {
+        parseMistakeHeader(text, "x.mistake");
+    } catch (const stoa::InputError& error) {
+        return error;
+    }
+    FAIL("parseMistakeHeader accepted: " << text);
+    return stoa::InputError("", 0, "");
+}
+
+GradeResult result(const std::string& name, GradeStatus status) {
+    GradeResult r;
+    r.lab = "01_transforms";
+    r.caseName = name;
+    r.status = status;
+    r.reason = "why";
+    return r;
+}
+
+} // namespace
+
+TEST_CASE("parseMistakeHeader reads the header up to the first --- line", "[grader][mistake]") {
+    MistakeFile mistake = parseMistakeHeader(kMistake, "solutions/01_transforms/mistakes/view_transposed.mistake");
+    CHECK(mistake.name == "view_transposed");
+    CHECK(mistake.hint == "the view matrix is transposed: the scene turns the wrong way");
+    CHECK(mistake.docs == "labs/01_transforms.md#the-view-matrix");
+    CHECK(mistake.fails == std::vector<std::string>{"orbit_front", "orbit_side"});
+    CHECK(mistake.file == "transforms.cpp");
+}
+
+TEST_CASE("parseMistakeHeader: docs is optional", "[grader][mistake]") {
+    MistakeFile mistake = parseMistakeHeader("hint: h\nfails: a\nfile: f.cpp\n--- find\n", "m.mistake");
+    CHECK(mistake.docs.empty());
+    CHECK(mistake.fails == std::vector<std::string>{"a"});
+}
+
+TEST_CASE("parseMistakeHeader rejects bad headers with file and line", "[grader][mistake]") {
+    stoa::InputError noColon = parseError("hint: h\nfails a b\nfile: f\n");
+    CHECK(noColon.file() == "x.mistake");
+    CHECK(noColon.line() == 2);
+    CHECK(std::string(noColon.what()).find("x.mistake:2:") == 0);
+
+    stoa::InputError unknown = parseError("hint: h\nfails: a\nfile: f\nfial: b\n");
+    CHECK(unknown.line() == 4);
+    CHECK(unknown.message().find("unknown key 'fial'") != std::string::npos);
+
+    stoa::InputError twice = parseError("hint: h\nhint: again\nfails: a\nfile: f\n");
+    CHECK(twice.line() == 2);
+    CHECK(twice.message().find("appears twice") != std::string::npos);
+
+    stoa::InputError emptyFails = parseError("hint: h\nfails:\nfile: f\n");
+    CHECK(emptyFails.line() == 2);
+
+    stoa::InputError missingFails = parseError("hint: h\nfile: f\n--- find\nfails: a\n");
+    CHECK(missingFails.line() == 0);
+    CHECK(missingFails.message().find("fails:") != std::string::npos);
+
+    stoa::InputError missingFile = parseError("hint: h\nfails: a\n");
+    CHECK(missingFile.message().find("file:") != std::string::npos);
+
+    stoa::InputError emptyHint = parseError("hint:\nfails: a\nfile: f\n");
+    CHECK(emptyHint.message().find("hint") != std::string::npos);
+}
+
+TEST_CASE("loadMistakes reads a lab's mistakes in name order", "[grader][mistake]") {
+    stoa::test::TempFolder folder;
+    folder.write("solutions/01_transforms/mistakes/b_second.mistake", kMistake);
+    folder.write("solutions/01_transforms/mistakes/a_first.mistake", "hint: h\nfails: x\nfile: f.cpp\n--- find\n");
+    folder.write("solutions/01_transforms/mistakes/notes.txt", "not a mistake");
+    std::vector<MistakeFile> mistakes = loadMistakes(folder.path() / "solutions/01_transforms");
+    REQUIRE(mistakes.size() == 2);
+    CHECK(mistakes[0].name == "a_first");
+    CHECK(mistakes[0].lab == "01_transforms");
+    CHECK(mistakes[1].name == "b_second");
+
+    CHECK(loadMistakes(folder.path() / "solutions/02_none").empty());
+    CHECK_THROWS_AS(loadMistakeFile(folder.path() / "missing.mistake"), stoa::InputError);
+}
+
+TEST_CASE("judgeMistake: caught only when every listed case failed", "[grader][mistake]") {
+    MistakeFile mistake = parseMistakeHeader(kMistake, "view_transposed.mistake");
+
+    MistakeVerdict caught = judgeMistake(mistake, {result("orbit_front", GradeStatus::Failed),
+                                                   result("orbit_side", GradeStatus::Failed),
+                                                   result("fly", GradeStatus::Passed)});
+    CHECK(caught.caught);
+    CHECK(caught.detail == "caught");
+
+    MistakeVerdict extra = judgeMistake(mistake, {result("orbit_front", GradeStatus::Failed),
+                                                  result("orbit_side", GradeStatus::Failed),
+                                                  result("fly", GradeStatus::Failed)});
+    CHECK(extra.caught);
+    CHECK(extra.detail == "caught (also fails fly)");
+
+    MistakeVerdict passed = judgeMistake(mistake, {result("orbit_front", GradeStatus::Failed),
+                                                   result("orbit_side", GradeStatus::Passed)});
+    CHECK_FALSE(passed.caught);
+    CHECK(passed.detail == "NOT caught: orbit_side passed");
+
+    MistakeVerdict crashed = judgeMistake(mistake, {result("orbit_front", GradeStatus::Error),
+                                                    result("orbit_side", GradeStatus::NotAttempted)});
+    CHECK_FALSE(crashed.caught);
+    CHECK(crashed.detail == "NOT caught: orbit_front is error: why; orbit_side is not attempted: why");
+
+    MistakeVerdict missing = judgeMistake(mistake, {result("orbit_front", GradeStatus::Failed)});
+    CHECK_FALSE(missing.caught);
+    CHECK(missing.detail.find("orbit_side was not graded") != std::string::npos);
+}

@@ -1,0 +1,114 @@
+// Adding results up, the terminal report, the hints, and --expect.
+
+#include "catch.hpp"
+
+#include "GradeCommand.hpp"
+#include "Grader.hpp"
+#include "Report.hpp"
+
+#include <sstream>
+
+using namespace stoa::grader;
+
+namespace {
+
+GradeResult result(const std::string& lab, const std::string& name, GradeStatus status, double points,
+                   double maxPoints, const std::string& reason = "") {
+    GradeResult r;
+    r.lab = lab;
+    r.caseName = name;
+    r.status = status;
+    r.points = points;
+    r.maxPoints = maxPoints;
+    r.reason = reason;
+    return r;
+}
+
+std::vector<GradeResult> sample() {
+    return {
+        result("01_transforms", "orbit_front", GradeStatus::Passed, 10, 10, "0.00% pixels off (max 2, mean 0.01)"),
+        result("01_transforms", "orbit_side", GradeStatus::Failed, 0, 5, "4.20% pixels off (max 255, mean 9.3)"),
+        result("01_transforms", "fly", GradeStatus::Error, 0, 2.5, "crashed with SIGSEGV (segmentation fault)"),
+        result("02_shading", "blinn", GradeStatus::NotAttempted, 0, 10, "not implemented: shade()"),
+        result("02_shading", "ambient", GradeStatus::NotAttempted, 0, 5, "not implemented: shade()"),
+    };
+}
+
+} // namespace
+
+TEST_CASE("summarize adds points and counts statuses per lab and overall", "[grader][report]") {
+    Totals totals = summarize(sample());
+    REQUIRE(totals.labs.size() == 2);
+    CHECK(totals.labs[0].lab == "01_transforms");
+    CHECK(totals.labs[0].points == 10);
+    CHECK(totals.labs[0].maxPoints == 17.5);
+    CHECK(totals.labs[0].statuses[GradeStatus::Passed] == 1);
+    CHECK(totals.labs[0].statuses[GradeStatus::Failed] == 1);
+    CHECK(totals.labs[0].statuses[GradeStatus::Error] == 1);
+    CHECK_FALSE(totals.labs[0].nothingAttempted());
+    CHECK(totals.labs[1].maxPoints == 15);
+    CHECK(totals.labs[1].nothingAttempted());
+    CHECK(totals.points == 10);
+    CHECK(totals.maxPoints == 32.5);
+    CHECK(totals.statuses.total() == 5);
+    CHECK(totals.statuses.describe() == "1 passed, 1 failed, 2 not attempted, 1 error");
+
+    Totals empty = summarize({});
+    CHECK(empty.labs.empty());
+    CHECK(empty.maxPoints == 0);
+    CHECK(empty.statuses.describe() == "no cases");
+}
+
+TEST_CASE("statusName and formatPoints read as a person writes them", "[grader][report]") {
+    CHECK(std::string(statusName(GradeStatus::NotAttempted)) == "not attempted");
+    CHECK(std::string(statusName(GradeStatus::NoReference)) == "no reference");
+    CHECK(formatPoints(10) == "10");
+    CHECK(formatPoints(2.5) == "2.5");
+    CHECK(formatPoints(0.25) == "0.25");
+    CHECK(formatPoints(0) == "0");
+    CHECK(formatPoints(1.0 / 3.0) == "0.33");
+}
+
+TEST_CASE("printReport shows the table, details, totals and the score", "[grader][report]") {
+    std::vector<GradeResult> results = sample();
+    results[1].renderedImage = "/tmp/w/01_transforms/orbit_side/rendered.png";
+    results[1].heatMapImage = "/tmp/w/01_transforms/orbit_side/heatmap.png";
+    results[2].programOutput = "line one\nSegmentation fault\n";
+    std::ostringstream out;
+    printReport(out, results, summarize(results));
+    std::string text = out.str();
+    CHECK(text.rfind("lab", 0) == 0);
+    CHECK(text.find("orbit_side") != std::string::npos);
+    CHECK(text.find("4.20% pixels off") != std::string::npos);
+    CHECK(text.find("heat map:  /tmp/w/01_transforms/orbit_side/heatmap.png") != std::string::npos);
+    CHECK(text.find("yours:     /tmp/w/01_transforms/orbit_side/rendered.png") != std::string::npos);
+    CHECK(text.find("| Segmentation fault") != std::string::npos);
+    CHECK(text.find("01_transforms  10 / 17.5 points") != std::string::npos);
+    CHECK(text.find("total") != std::string::npos);
+    CHECK(text.substr(text.size() - 17) == "score: 10 / 32.5\n");
+}
+
+TEST_CASE("hints point at the docs of labs where nothing was attempted", "[grader][report]") {
+    std::vector<std::string> lines = hints(summarize(sample()));
+    REQUIRE(lines.size() == 1);
+    CHECK(lines[0] == "lab 02_shading: nothing attempted yet -- start with docs/labs/02_shading.md");
+}
+
+TEST_CASE("--expect: every case must have the status", "[grader][report]") {
+    std::vector<GradeResult> stubs = {result("01", "a", GradeStatus::NotAttempted, 0, 1),
+                                      result("01", "b", GradeStatus::NotAttempted, 0, 1)};
+    CHECK(allHaveStatus(stubs, GradeStatus::NotAttempted));
+    CHECK(unmetExpectations(stubs, GradeStatus::NotAttempted).empty());
+    CHECK_FALSE(allHaveStatus({}, GradeStatus::Passed));
+    CHECK(unmetExpectations({}, GradeStatus::Passed) == std::vector<std::string>{"no case was graded"});
+
+    std::vector<std::string> unmet = unmetExpectations(sample(), GradeStatus::Passed);
+    REQUIRE(unmet.size() == 4);
+    CHECK(unmet[0] == "01_transforms/orbit_side is failed: 4.20% pixels off (max 255, mean 9.3)");
+}
+
+TEST_CASE("progressLine", "[grader][report]") {
+    GradeResult r = result("01_transforms", "orbit_front", GradeStatus::Passed, 1, 1);
+    r.seconds = 0.84;
+    CHECK(progressLine(r, 3, 12) == "[3/12] 01_transforms/orbit_front ... passed (0.8 s)");
+}
