@@ -59,6 +59,11 @@ struct ProcessOutcome {
 ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::filesystem::path& workDir,
                           const ProcessLimits& limits);
 
+/// Makes Ctrl-C (SIGINT) and SIGTERM kill the process groups of the children
+/// running at that moment before the grader itself ends; without it they would
+/// go on rendering, since each runs in its own process group. Call once from main().
+void killChildrenOnInterrupt();
+
 /// "SIGSEGV (segmentation fault)" for a signal number; "signal 77" for an unknown one.
 std::string describeSignal(int signal);
 

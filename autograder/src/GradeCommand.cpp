@@ -54,10 +54,10 @@ int runGrade(const Options& options, const Environment& env) {
     }
 
     std::vector<GradeResult> results =
-        gradeCases(jobs, runSettings(options), options.jobs, [&](const GradeResult& result, std::size_t done,
-                                                                 std::size_t total) {
-            env.err << progressLine(result, done, total) << std::endl;
-        });
+        gradeCases(jobs, runSettings(options), options.jobs,
+                   [&](std::size_t, const GradeResult& result, std::size_t done, std::size_t total) {
+                       env.err << progressLine(result, done, total) << std::endl;
+                   });
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     Totals totals = summarize(results);

@@ -36,15 +36,16 @@ std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunS
         results[i] = gradeCase(jobs[i], settings);
         std::lock_guard<std::mutex> lock(progressMutex);
         ++done;
-        if (progress) progress(results[i], done, jobs.size());
+        if (progress) progress(i, results[i], done, jobs.size());
     });
     return results;
 }
 
-std::string progressLine(const GradeResult& result, std::size_t done, std::size_t total) {
+std::string progressLine(const GradeResult& result, std::size_t done, std::size_t total, const std::string& label) {
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%.1f", result.seconds);
-    return "[" + std::to_string(done) + "/" + std::to_string(total) + "] " + result.fullName() + " ... " +
+    return "[" + std::to_string(done) + "/" + std::to_string(total) + "] " + (label.empty() ? "" : label + ": ") +
+           result.fullName() + " ... " +
            statusName(result.status) + " (" + seconds + " s)";
 }
 

@@ -17,16 +17,19 @@ namespace stoa::grader {
 /// and returns when all are done. `task` must not throw.
 void forEachInParallel(std::size_t count, int jobs, const std::function<void(std::size_t)>& task);
 
-/// Called as each case finishes (from one thread at a time): the result, how many
-/// are done, and how many there are.
-using ProgressCallback = std::function<void(const GradeResult& result, std::size_t done, std::size_t total)>;
+/// Called as each case finishes (from one thread at a time): the job's index in
+/// `jobs`, its result, how many are done, and how many there are.
+using ProgressCallback =
+    std::function<void(std::size_t index, const GradeResult& result, std::size_t done, std::size_t total)>;
 
 /// Grades every job; the results come back in the order of `jobs`.
 std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunSettings& settings, int parallelJobs,
                                     const ProgressCallback& progress = {});
 
-/// "[3/12] 01_transforms/orbit_front ... passed (0.8 s)"
-std::string progressLine(const GradeResult& result, std::size_t done, std::size_t total);
+/// "[3/12] 01_transforms/orbit_front ... passed (0.8 s)"; a `label` goes before
+/// the case: "[3/12] mistake no_half_vector: 02_shading/sun ... failed (0.6 s)".
+std::string progressLine(const GradeResult& result, std::size_t done, std::size_t total,
+                         const std::string& label = "");
 
 /// `requested` (created when missing), or a new folder stoa-grade-XXXXXX in the
 /// system's temp folder when `requested` is empty. Returned as an absolute path.

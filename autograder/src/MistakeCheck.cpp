@@ -69,14 +69,13 @@ int runCheckMistakes(const Options& options, const Environment& env) {
     std::filesystem::path workDir = makeWorkDir(options.workDir);
     std::vector<MistakeRun> runs;
     std::vector<CaseJob> jobs;
-    int notBuilt = 0;
+    std::vector<std::string> notBuilt;
     for (const PlannedLab& lab : labs) {
         for (MistakeFile& mistake : loadMistakes(solutionsDir / lab.lab)) {
             std::filesystem::path program = mistakeProgram(env.binDir, lab.lab, mistake.name);
             if (!isExecutable(program)) {
-                env.err << "note: mistake " << lab.lab << "." << mistake.name << " is not built (no program "
-                        << program.string() << "); skipping it\n";
-                ++notBuilt;
+                notBuilt.push_back("note: mistake " + lab.lab + "." + mistake.name + " is not built (no program " +
+                                   program.string() + "); skipping it");
                 continue;
             }
             MistakeRun run;
@@ -95,17 +94,28 @@ int runCheckMistakes(const Options& options, const Environment& env) {
         }
     }
     if (runs.empty()) {
-        env.err << "stoa-grade: no mistake program to check in " << (env.binDir / "mistakes").string()
-                << (notBuilt > 0 ? ": build them in a solutions build with tests "
-                                   "(-DSTOA_USE_SOLUTIONS=ON -DSTOA_BUILD_TESTS=ON)\n"
-                                 : ": no solutions/NN_name/mistakes/*.mistake file for the selected labs\n");
+        if (options.workDir.empty()) {
+            std::error_code ignored;
+            std::filesystem::remove_all(workDir, ignored);
+        }
+        env.err << "stoa-grade: no mistake program to check in " << (env.binDir / "mistakes").string();
+        if (notBuilt.empty())
+            env.err << ": no solutions/NN_name/mistakes/*.mistake file for the selected labs\n";
+        else
+            env.err << ": none of the " << notBuilt.size() << " planted mistakes is built; they are built "
+                    << "by a solutions build with tests (-DSTOA_USE_SOLUTIONS=ON -DSTOA_BUILD_TESTS=ON)\n";
         return 1;
     }
+    for (const std::string& note : notBuilt) env.err << note << "\n";
 
+    std::vector<std::string> labels(jobs.size());
+    for (const MistakeRun& run : runs)
+        for (std::size_t i = run.firstJob; i < run.firstJob + run.jobCount; ++i)
+            labels[i] = "mistake " + run.mistake.name;
     std::vector<GradeResult> results = gradeCases(
         jobs, runSettings(options), options.jobs,
-        [&](const GradeResult& result, std::size_t done, std::size_t total) {
-            env.err << progressLine(result, done, total) << std::endl;
+        [&](std::size_t index, const GradeResult& result, std::size_t done, std::size_t total) {
+            env.err << progressLine(result, done, total, labels[index]) << std::endl;
         });
 
     std::size_t nameWidth = 7, failsWidth = 10;

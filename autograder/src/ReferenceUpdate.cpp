@@ -6,6 +6,7 @@
 #include <stoa/image/ImageCompare.hpp>
 
 #include <cstring>
+#include <mutex>
 #include <sstream>
 
 namespace stoa::grader {
@@ -103,7 +104,14 @@ int runUpdateReferences(const Options& options, const Environment& env) {
         jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
     }
     std::vector<RenderOutcome> renders(jobs.size());
-    forEachInParallel(jobs.size(), options.jobs, [&](std::size_t i) { renders[i] = renderCase(jobs[i], settings); });
+    std::mutex progressMutex;
+    std::size_t done = 0;
+    forEachInParallel(jobs.size(), options.jobs, [&](std::size_t i) {
+        renders[i] = renderCase(jobs[i], settings);
+        std::lock_guard<std::mutex> lock(progressMutex);
+        env.err << "[" << ++done << "/" << jobs.size() << "] " << jobs[i].lab << "/" << jobs[i].spec.name << " ... "
+                << (renders[i].rendered ? "rendered" : statusName(renders[i].status)) << std::endl;
+    });
 
     int failures = 0;
     for (std::size_t i = 0; i < jobs.size(); ++i) {

@@ -107,7 +107,7 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
     bool headerPrinted = false;
     for (const GradeResult& result : results) {
         bool interesting = result.status == GradeStatus::Failed || result.status == GradeStatus::Error ||
-                           result.reason.size() > kReasonColumnWidth;
+                           (result.status != GradeStatus::NoReference && result.reason.size() > kReasonColumnWidth);
         if (!interesting) continue;
         if (!headerPrinted) out << "\ndetails:\n";
         headerPrinted = true;
@@ -120,6 +120,11 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
         if (result.status == GradeStatus::Error && !result.programOutput.empty())
             out << "    the program's last output:\n" << lastLines(result.programOutput, kOutputLinesShown);
     }
+
+    int missingReferences = totals.statuses[GradeStatus::NoReference];
+    if (missingReferences > 0)
+        out << "\n" << missingReferences << (missingReferences == 1 ? " case has" : " cases have")
+            << " no reference image: run stoa-grade --update-references from a solutions build\n";
 
     out << "\n";
     for (const LabTotals& lab : totals.labs)

@@ -1,6 +1,7 @@
 // stoa-grade: renders the labs' graded cases in child processes, compares them
 // with the reference images, and reports (see CommandLine.hpp for the usage).
 
+#include "ChildProcess.hpp"
 #include "CommandLine.hpp"
 #include "GradeCommand.hpp"
 #include "LabCatalog.hpp"
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
             std::cout << usageText();
             return 0;
         }
+        killChildrenOnInterrupt();
         std::filesystem::path binDir = options.binDir.empty() ? executableDir() : options.binDir;
         if (binDir.empty()) {
             std::cerr << "stoa-grade: cannot tell which folder it runs from; pass --bin-dir\n";

@@ -169,7 +169,8 @@ TEST_CASE("gradeCases keeps the order of the jobs and reports progress", "[grade
     }
     std::vector<std::string> lines;
     std::vector<GradeResult> results = gradeCases(jobs, fixture.settings, 3,
-        [&](const GradeResult& result, std::size_t done, std::size_t total) {
+        [&](std::size_t index, const GradeResult& result, std::size_t done, std::size_t total) {
+            CHECK(result.caseName == jobs[index].spec.name);
             lines.push_back(progressLine(result, done, total));
         });
     REQUIRE(results.size() == 4);

@@ -94,7 +94,7 @@ TEST_CASE("hints point at the docs of labs where nothing was attempted", "[grade
     CHECK(lines[0] == "lab 02_shading: nothing attempted yet -- start with docs/labs/02_shading.md");
 }
 
-TEST_CASE("--expect: every case must have the status", "[grader][report]") {
+TEST_CASE("unmetExpectations: with --expect, every case must have the status", "[grader][report]") {
     std::vector<GradeResult> stubs = {result("01", "a", GradeStatus::NotAttempted, 0, 1),
                                       result("01", "b", GradeStatus::NotAttempted, 0, 1)};
     CHECK(allHaveStatus(stubs, GradeStatus::NotAttempted));
@@ -111,4 +111,5 @@ TEST_CASE("progressLine", "[grader][report]") {
     GradeResult r = result("01_transforms", "orbit_front", GradeStatus::Passed, 1, 1);
     r.seconds = 0.84;
     CHECK(progressLine(r, 3, 12) == "[3/12] 01_transforms/orbit_front ... passed (0.8 s)");
+    CHECK(progressLine(r, 3, 12, "mistake m") == "[3/12] mistake m: 01_transforms/orbit_front ... passed (0.8 s)");
 }

@@ -164,10 +164,11 @@ bool Program::reloadIfChanged() {
     if (m_stages.empty()) return false;
     std::vector<fs::path> watchedFiles;
     for (const FileStamp& stamp : m_watched) watchedFiles.push_back(stamp.path);
-    const std::vector<FileStamp> now = stampsOf(watchedFiles);
-    if (now == m_watched) return false;
-    m_watched = now; // a failed attempt is not retried until a file changes again
+    if (stampsOf(watchedFiles) == m_watched) return false;
 
+    // A file or include that cannot be found (yet: an editor may still be
+    // saving it) leaves the stamps as they were, so the next call looks again.
+    // That costs a few small file reads per call and no GL work.
     std::vector<ShaderSource> sources;
     try {
         for (const Stage& stage : m_stages) sources.push_back(ShaderSource::load(stage.path, m_searchPath));
@@ -175,8 +176,9 @@ bool Program::reloadIfChanged() {
         m_lastError = error.what();
         return false;
     }
-    // Watch the files of the new version (an edit may add an include) even if
-    // it does not compile: fixing the new include must trigger the next reload.
+    // From here on watch the files of the new version (an edit may add an
+    // include), even if it does not compile; a compile error is not retried
+    // until one of them changes again.
     std::vector<fs::path> newFiles;
     for (const ShaderSource& source : sources) appendFiles(newFiles, source.files());
     m_watched = stampsOf(newFiles);

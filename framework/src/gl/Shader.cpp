@@ -2,7 +2,6 @@
 
 #include <stoa/gl/Debug.hpp>
 
-#include <map>
 #include <utility>
 
 namespace stoa {
@@ -48,41 +47,14 @@ GLuint compile(GLenum stage, const std::string& text, std::string& log) {
 
 } // namespace
 
-namespace detail {
-
-int driverLineShift() {
-    // GLSL 3.30 says the line after `#line N` is N+1; later versions, C and
-    // Mesa say N. ShaderSource writes the C rule; here we learn the driver's.
-    static std::map<std::string, int> shiftByDriver;
-    const auto text = [](GLenum name) {
-        const GLubyte* value = glGetString(name);
-        return value ? std::string(reinterpret_cast<const char*>(value)) : std::string();
-    };
-    const std::string driver = text(GL_VENDOR) + "|" + text(GL_RENDERER) + "|" + text(GL_VERSION);
-    if (const auto known = shiftByDriver.find(driver); known != shiftByDriver.end()) return known->second;
-
-    // The probe's error sits on line 2 of file 0 by the C rule.
-    const ShaderSource probe = ShaderSource::fromText("#version 330 core\nnot glsl;\n", "line-probe.frag", {});
-    std::string log;
-    const GLuint id = compile(GL_FRAGMENT_SHADER, probe.text(), log);
-    if (id) glDeleteShader(id);
-    const std::optional<ShaderLocation> reported = probe.firstError(log);
-    const int shift = reported ? reported->line - 2 : 0;
-    shiftByDriver[driver] = shift;
-    return shift;
-}
-
-} // namespace detail
-
 Shader::Shader(GLenum stage, const ShaderSource& source) : m_stage(stage) {
     std::string log;
     m_id = compile(stage, source.text(), log);
     if (m_id) return;
-    const int shift = detail::driverLineShift();
-    std::string translated = source.translateLog(log, shift);
+    std::string translated = source.translateLog(log);
     while (!translated.empty() && (translated.back() == '\n' || translated.back() == ' ')) translated.pop_back();
     const std::string top = source.files().empty() ? std::string("?") : source.files()[0].generic_string();
-    const std::optional<ShaderLocation> first = source.firstError(log, shift);
+    const std::optional<ShaderLocation> first = source.firstError(log);
     throw ShaderError(first ? first->file : top, first ? first->line : 0,
                       std::string("Program: cannot compile ") + stageName(stage) + " shader " + top + ":\n" +
                           translated,

@@ -16,7 +16,7 @@ namespace stoa {
 namespace {
 
 // The stub macro every shader gets: a stub compiles to its neutral value.
-const char* const kStubMacro = "#define STOA_NOT_IMPLEMENTED(value) (value)\n";
+const char* const kStubMacro = "#define STOA_NOT_IMPLEMENTED(value) (value)";
 const char* const kStubName = "STOA_NOT_IMPLEMENTED";
 
 std::string displayName(const fs::path& path) { return path.lexically_normal().generic_string(); }
@@ -184,7 +184,6 @@ private:
         m_result.m_files.push_back(path.lexically_normal());
         m_open.push_back({identity(path), name});
 
-        std::string& out = m_result.m_text;
         bool inBlockComment = false;
         bool versionSeen = !isTop;
         FunctionTracker tracker;
@@ -197,16 +196,15 @@ private:
 
             if (!versionSeen) {
                 if (isBlank(code)) {
-                    out += line + '\n';
+                    emit(line, index, lineNumber);
                     continue;
                 }
                 if (directive != "version")
                     throw InputError(name, lineNumber,
                                      "expected '#version 330 core' as the first line (only comments may precede it)");
                 versionSeen = true;
-                out += line + '\n';
-                out += kStubMacro;
-                out += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(index) + "\n";
+                emit(line, index, lineNumber);
+                emit(kStubMacro, index, lineNumber); // errors there are #version's
                 continue;
             }
             if (directive == "version") {
@@ -229,7 +227,7 @@ private:
                 tracker.feed(code.substr(fed));
                 tracker.endLine();
             }
-            out += line + '\n';
+            emit(line, index, lineNumber);
         }
         if (!versionSeen)
             throw InputError(name, 0, "expected '#version 330 core' as the first line, found no #version");
@@ -271,15 +269,17 @@ private:
             chain.push_back(displayName(found));
             throw InputError(includingName, lineNumber, "include cycle: " + joined(chain, " -> "));
         }
-        std::string& out = m_result.m_text;
         if (m_done.count(key)) {
-            out += '\n'; // included before: once only; the blank line keeps the numbering
+            emit("", includingIndex, lineNumber); // included before: once only
             return;
         }
-        const std::string text = readFile(found);
-        out += "#line 1 " + std::to_string(m_result.m_files.size()) + "\n";
-        expand(text, found, /*isTop=*/false);
-        out += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(includingIndex) + "\n";
+        expand(readFile(found), found, /*isTop=*/false);
+    }
+
+    void emit(const std::string& line, int file, int lineNumber) {
+        m_result.m_text += line;
+        m_result.m_text += '\n';
+        m_result.m_origins.push_back({file, lineNumber});
     }
 
     ShaderSource& m_result;
@@ -346,25 +346,33 @@ bool mentionsError(const std::string& text) {
 
 } // namespace
 
-std::string ShaderSource::translateLog(const std::string& log, int lineShift) const {
+std::optional<ShaderLocation> ShaderSource::origin(int expandedLine) const {
+    if (expandedLine < 1 || expandedLine > static_cast<int>(m_origins.size())) return std::nullopt;
+    const LineOrigin& from = m_origins[static_cast<std::size_t>(expandedLine - 1)];
+    return ShaderLocation{displayName(m_files[static_cast<std::size_t>(from.file)]), from.line};
+}
+
+// The driver's source-string number is ignored: there is one string, and Mesa
+// reports 0 for errors inside expressions whatever #line said (see the header).
+std::string ShaderSource::translateLog(const std::string& log) const {
     std::string result;
     for (const std::string& line : splitLines(log)) {
         const std::optional<LogPlace> place = parseLogLine(line);
-        if (place && place->file >= 0 && place->file < static_cast<int>(m_files.size()))
-            result += displayName(m_files[place->file]) + ":" + std::to_string(place->line - lineShift) + ": " +
-                      place->rest + "\n";
+        const std::optional<ShaderLocation> location = place ? origin(place->line) : std::nullopt;
+        if (location)
+            result += location->file + ":" + std::to_string(location->line) + ": " + place->rest + "\n";
         else
             result += line + "\n";
     }
     return result;
 }
 
-std::optional<ShaderLocation> ShaderSource::firstError(const std::string& log, int lineShift) const {
+std::optional<ShaderLocation> ShaderSource::firstError(const std::string& log) const {
     std::optional<ShaderLocation> first;
     for (const std::string& line : splitLines(log)) {
         const std::optional<LogPlace> place = parseLogLine(line);
-        if (!place || place->file < 0 || place->file >= static_cast<int>(m_files.size())) continue;
-        const ShaderLocation location{displayName(m_files[place->file]), place->line - lineShift};
+        const std::optional<ShaderLocation> location = place ? origin(place->line) : std::nullopt;
+        if (!location) continue;
         if (mentionsError(place->rest)) return location;
         if (!first) first = location;
     }

@@ -19,6 +19,7 @@ struct Vertex {
     glm::vec3 normal{0.0f};    // object space, unit length once the mesh is complete
     glm::vec2 uv{0.0f};        // texture coordinates, v up (OpenGL convention: v = 0 is the image's bottom row)
 };
+static_assert(sizeof(Vertex) == 8 * sizeof(float), "Vertex is uploaded to the GPU as 8 tightly packed floats");
 
 /// An indexed triangle list: every three entries of `indices` name the
 /// vertices of one triangle, counter-clockwise when seen from its front.

@@ -78,8 +78,9 @@ public:
     /// Rebuilds the program when a source file (includes too) changed on disk
     /// since the last build or attempt. On success the new program replaces the
     /// old (same Program object, fresh id, uniforms to set again) and the
-    /// result is true; on an error the old program stays, lastError() says
-    /// why, and the result is false until a file changes again.
+    /// result is true. On an error the old program stays, lastError() says why
+    /// and the result is false: a compile error is retried once a file changes
+    /// again, a missing file or include at every call until it appears.
     bool reloadIfChanged();
     /// The message of the last failed reload; empty after a successful one.
     const std::string& lastError() const { return m_lastError; }

@@ -53,10 +53,4 @@ private:
     GLuint m_id = 0;
 };
 
-namespace detail {
-/// How far this driver's line numbers run ahead of `#line`'s C rule (0 on
-/// Mesa). Measured once per renderer by compiling a probe; needs a context.
-int driverLineShift();
-} // namespace detail
-
 } // namespace stoa

@@ -3,10 +3,16 @@
 // glShaderSource. Needs no GL context (part of stoa_core), so the grader and
 // the tests can list a lab's GLSL stubs without a driver.
 //
-// The expanded text keeps the driver's error lines meaningful: every file gets
-// a source-string number K (its index in files()) and `#line N K` directives
-// restore its own line numbers, so translateLog() can turn the driver's
-// "1:12(5): error: ..." back into "shaders/common/lighting.glsl:12: error: ...".
+// The driver's messages still point at the right place: ShaderSource knows
+// which file and line every line of the expanded text came from, and
+// translateLog() turns the driver's "0:57(5): error: ..." back into
+// "shaders/common/lighting.glsl:12: error: ...".
+//
+// Why no `#line N K` directives: Mesa (22.3, llvmpipe) honours the line
+// number of `#line` (the next line is N) but reports source string 0 for
+// errors inside expressions, e.g. "0:2(15): error: `x' undeclared" for a
+// mistake in string 2. With one string and no #line, the line number alone
+// identifies file and line on every driver.
 //
 //   ShaderSource source = ShaderSource::load("lab02/blinn_phong.frag", {labDir, paths::shadersDir()});
 //   glShaderSource(id, 1, &text, nullptr) with text = source.text().c_str()
@@ -54,9 +60,13 @@ public:
     /// The expanded source, for glShaderSource.
     const std::string& text() const { return m_text; }
 
-    /// Every file in the expansion; files()[0] is the top file, files()[K] is
-    /// source-string number K in the driver's messages.
+    /// Every file in the expansion, in the order first included; files()[0] is the top file.
     const std::vector<std::filesystem::path>& files() const { return m_files; }
+
+    /// The file and line that line `expandedLine` (1-based) of text() comes
+    /// from; nothing outside text(). The inserted #define counts as the
+    /// #version line, a repeated (skipped) #include as the #include line.
+    std::optional<ShaderLocation> origin(int expandedLine) const;
 
     /// The STOA_NOT_IMPLEMENTED(...) calls outside comments, in file order.
     const std::vector<ShaderStub>& stubs() const { return m_stubs; }
@@ -65,20 +75,25 @@ public:
     ///   Mesa    "K:L(C): error: ..."      -> "path/file.glsl:L: error: ..."
     ///   NVIDIA  "K(L) : error C0000: ..." -> "path/file.glsl:L: error C0000: ..."
     ///   AMD     "ERROR: K:L: ..."         -> "path/file.glsl:L: error: ..."
-    /// Other lines are kept. `lineShift` is how far the driver's line numbers
-    /// run ahead of the C rule "the line after `#line N` is line N" (Mesa: 0;
-    /// a driver that follows GLSL 3.30's wording "N+1" literally: 1).
-    std::string translateLog(const std::string& log, int lineShift = 0) const;
+    /// where L is a line of text() (K, the source string, is always 0 here).
+    /// Other lines, and lines past the end of text(), are kept as they are.
+    std::string translateLog(const std::string& log) const;
 
     /// Where the first error of `log` lies (the first message when none says
     /// "error"); nothing when no line of the log names a place in these files.
-    std::optional<ShaderLocation> firstError(const std::string& log, int lineShift = 0) const;
+    std::optional<ShaderLocation> firstError(const std::string& log) const;
 
 private:
     friend class ShaderExpander;
 
+    struct LineOrigin {
+        int file; // index into m_files
+        int line; // 1-based
+    };
+
     std::string m_text;
     std::vector<std::filesystem::path> m_files;
+    std::vector<LineOrigin> m_origins; // one per line of m_text
     std::vector<ShaderStub> m_stubs;
 };
 
