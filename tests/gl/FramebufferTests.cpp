@@ -68,6 +68,7 @@ TEST_CASE("Framebuffer: depth as a texture, without colour (a shadow map)") {
     glEnable(GL_DEPTH_TEST);
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
+    program.use();
     topHalf.draw(); // z = 0 in clip space: window depth 0.5
     glDisable(GL_DEPTH_TEST);
     const std::vector<float> depth = shadowMap.readDepth();

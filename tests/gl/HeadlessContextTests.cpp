@@ -26,6 +26,8 @@ TEST_CASE("HeadlessContext: an OpenGL 3.3 core context on llvmpipe") {
 }
 
 TEST_CASE("HeadlessContext: OSMesa and EGL contexts one after another in one process") {
+    const bool both = HeadlessContext::isAvailable(HeadlessBackend::OSMesa) &&
+                      HeadlessContext::isAvailable(HeadlessBackend::Egl);
     int created = 0;
     for (HeadlessBackend backend : {HeadlessBackend::OSMesa, HeadlessBackend::Egl, HeadlessBackend::OSMesa}) {
         if (!HeadlessContext::isAvailable(backend)) {
@@ -42,7 +44,7 @@ TEST_CASE("HeadlessContext: OSMesa and EGL contexts one after another in one pro
         CHECK(target.readColor().pixel(2, 2) == glm::u8vec4(0, 255, 0, 255));
         ++created;
     }
-    CHECK(created >= 2);
+    CHECK(created == (both ? 3 : 1)); // Mesa 25.1+ has no OSMesa: EGL alone then
 }
 
 TEST_CASE("HeadlessContext: backend names") {
