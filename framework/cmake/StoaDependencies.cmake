@@ -27,15 +27,8 @@ if(NOT GLM_INCLUDE_DIR)
   message(FATAL_ERROR "Stoa needs GLM (Debian package: libglm-dev). Run .ci/install-deps.sh.")
 endif()
 
-# OSMesa is loaded at run time (dlopen), so one binary runs on machines with
-# and without it (Mesa 25.1 dropped OSMesa). Only its header is used here.
-find_path(OSMESA_INCLUDE_DIR GL/osmesa.h)
-if(OSMESA_INCLUDE_DIR)
-  set(STOA_HAVE_OSMESA_HEADER ON)
-else()
-  message(STATUS "GL/osmesa.h not found: headless rendering will use EGL only")
-  set(STOA_HAVE_OSMESA_HEADER OFF)
-endif()
+# OSMesa is loaded at run time (dlopen, framework/src/app/HeadlessContext.cpp), so
+# one binary runs on machines with and without it (Mesa 25.1 dropped OSMesa).
 
 if(STOA_BUILD_TESTS)
   find_package(Catch2 QUIET)

@@ -118,6 +118,9 @@ TEST_CASE("Debug: enableDebugOutput prints each driver message once") {
     glEnable(kNotACapability);
     glEnable(kNotACapability);
     test::takeGlError();
+    CHECK_THROWS_AS(Program::fromFiles(test::glShadersDir / "position2d.vert",
+                                       test::glShadersDir / "broken_top.frag", {}),
+                    ShaderError);
     const std::string printed = readAll(out);
     std::fclose(out);
     enableDebugOutput(stderr);
@@ -126,4 +129,5 @@ TEST_CASE("Debug: enableDebugOutput prints each driver message once") {
     REQUIRE(first != std::string::npos);
     CHECK(printed.find("GL API error", first + 1) == std::string::npos);
     CHECK(printed.find("glEnable") != std::string::npos);
+    CHECK(printed.find("undeclaredColor") == std::string::npos); // the ShaderError says it, with the file name
 }

@@ -1,5 +1,5 @@
 #include "GlTestSupport.hpp"
-#include "../image/TempFolder.hpp"
+#include "TempFolder.hpp"
 
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/core/InputError.hpp>

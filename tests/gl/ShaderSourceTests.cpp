@@ -1,7 +1,7 @@
 // ShaderSource: #include expansion, #line mapping, log translation and stub
 // listing. No GL context: these run in stoa-tests-core.
 #include "catch.hpp"
-#include "../image/TempFolder.hpp"
+#include "TempFolder.hpp"
 
 #include <stoa/core/InputError.hpp>
 #include <stoa/gl/ShaderSource.hpp>
@@ -163,6 +163,16 @@ TEST_CASE("ShaderSource: a malformed #include is an error") {
     const InputError error = errorOf([&] { ShaderSource::load(folder / "top.frag", {}); });
     CHECK(error.line() == 3);
     CHECK(error.message().find("expected #include \"name\"") != std::string::npos);
+}
+
+TEST_CASE("ShaderSource: a /* comment left open in a file is an error") {
+    test::TempFolder folder("shader-comment");
+    writeFile(folder / "top.frag", "#version 330 core\n#include \"lib.glsl\"\nvoid main() {}\n");
+    writeFile(folder / "lib.glsl", "/* closed */\nfloat f() { return 1.0; } /* open\n  still open\n");
+    const InputError error = errorOf([&] { ShaderSource::load(folder / "top.frag", {}); });
+    CHECK(error.file() == normal(folder / "lib.glsl"));
+    CHECK(error.line() == 2);
+    CHECK(error.message().find("never closed") != std::string::npos);
 }
 
 TEST_CASE("ShaderSource: #version must open the top file and only the top file") {

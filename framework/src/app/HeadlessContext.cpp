@@ -14,6 +14,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -31,7 +32,7 @@ namespace {
 
 // Only one context may live at a time: loadFunctions() points every GL entry
 // point of the process at it.
-bool s_contextAlive = false;
+std::optional<HeadlessBackend> s_liveBackend;
 
 // OSMesa
 // The few declarations of GL/osmesa.h used here. They are Mesa's stable ABI;
@@ -291,14 +292,15 @@ HeadlessBackend HeadlessContext::defaultBackend() {
 bool HeadlessContext::isAvailable(HeadlessBackend backend) {
     switch (backend) {
     case HeadlessBackend::OSMesa: return osMesaLibrary().handle != nullptr;
-    case HeadlessBackend::Egl: return s_contextAlive || eglDisplayInitialises();
+    // Initialising and terminating the display would end a live EGL context.
+    case HeadlessBackend::Egl: return s_liveBackend == HeadlessBackend::Egl || eglDisplayInitialises();
     }
     return false;
 }
 
 HeadlessContext::HeadlessContext(std::optional<HeadlessBackend> backend)
     : m_backend(backend ? *backend : defaultBackend()) {
-    STOA_ASSERT(!s_contextAlive, "HeadlessContext(): another HeadlessContext is alive in this process. "
+    STOA_ASSERT(!s_liveBackend, "HeadlessContext(): another HeadlessContext is alive in this process. "
                                  "Destroy it first: the GL entry points follow one context at a time.");
     if (m_backend == HeadlessBackend::OSMesa) {
         m_state = std::make_unique<OsMesaState>();
@@ -307,12 +309,12 @@ HeadlessContext::HeadlessContext(std::optional<HeadlessBackend> backend)
         m_state = std::make_unique<EglState>();
         gl::loadFunctions(&eglProcAddress, "EGL");
     }
-    s_contextAlive = true;
+    s_liveBackend = m_backend;
 }
 
 HeadlessContext::~HeadlessContext() {
     m_state.reset();
-    s_contextAlive = false;
+    s_liveBackend.reset();
 }
 
 std::string HeadlessContext::description() const {

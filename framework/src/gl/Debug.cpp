@@ -68,6 +68,9 @@ const char* typeName(GLenum type) {
 void GLAPIENTRY printDebugMessage(GLenum source, GLenum type, GLuint /*id*/, GLenum severity, GLsizei length,
                                   const GLchar* message, const void* /*user*/) {
     if (severity != GL_DEBUG_SEVERITY_HIGH && severity != GL_DEBUG_SEVERITY_MEDIUM) return;
+    // Compile errors reach the user as ShaderError, with file names; the
+    // driver's copy of the log would only repeat them with bare line numbers.
+    if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     std::string text = length >= 0 ? std::string(message, static_cast<std::size_t>(length)) : std::string(message);
     while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
     if (!s_debugSeen.insert(text).second) return;

@@ -185,13 +185,16 @@ private:
         m_open.push_back({identity(path), name});
 
         bool inBlockComment = false;
+        int commentOpenedOn = 0; // the line of the /* still open, when inBlockComment
         bool versionSeen = !isTop;
         FunctionTracker tracker;
         const std::vector<std::string> lines = splitLines(text);
         for (std::size_t i = 0; i < lines.size(); ++i) {
             const int lineNumber = static_cast<int>(i) + 1;
             const std::string& line = lines[i];
+            const bool wasInComment = inBlockComment;
             const std::string code = withoutComments(line, inBlockComment);
+            if (inBlockComment && !wasInComment) commentOpenedOn = lineNumber;
             const std::string directive = directiveOf(code);
 
             if (!versionSeen) {
@@ -229,6 +232,8 @@ private:
             }
             emit(line, index, lineNumber);
         }
+        // Left open, the comment would swallow the including file's next lines.
+        if (inBlockComment) throw InputError(name, commentOpenedOn, "this /* comment is never closed");
         if (!versionSeen)
             throw InputError(name, 0, "expected '#version 330 core' as the first line, found no #version");
 

@@ -4,7 +4,9 @@
 // pixels. Two backends:
 //   OSMesa  libOSMesa, loaded at run time (dlopen), never linked: Mesa 25.1
 //           dropped it, and a binary built here must still run there.
-//   EGL     a surfaceless EGL display (EGL_MESA_platform_surfaceless).
+//   EGL     a surfaceless EGL display (EGL_MESA_platform_surfaceless). To get
+//           llvmpipe where Mesa also drives a GPU, it sets
+//           LIBGL_ALWAYS_SOFTWARE=1 in the environment unless already set.
 // There is no default framebuffer to speak of (OSMesa's is 1x1, EGL has none):
 // render into a stoa::gl::Framebuffer and read it back from there.
 //

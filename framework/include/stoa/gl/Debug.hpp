@@ -17,7 +17,8 @@ namespace stoa {
 
 /// Asks the driver for debug messages (GL_KHR_debug, else GL_ARB_debug_output)
 /// and prints those of medium or high severity to `out`, each distinct message
-/// once. Returns false when the context offers neither extension.
+/// once. Shader compiler messages are left out: Program reports them with file
+/// names (ShaderError). Returns false when the context offers neither extension.
 bool enableDebugOutput(std::FILE* out = stderr);
 
 /// Whether checks run: setCheckedMode()'s last value, else $STOA_GL_CHECKED=1.

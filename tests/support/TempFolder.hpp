@@ -1,12 +1,14 @@
 #pragma once
-// A fresh folder under the system's temp folder, removed with everything in it
-// when the object goes.
+// A fresh folder under the system's temporary folder, removed with everything
+// in it when the object goes out of scope. Each test that writes files makes
+// its own, so tests can run in parallel (ctest -j).
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #include <sys/stat.h>
 
@@ -14,9 +16,10 @@ namespace stoa::test {
 
 class TempFolder {
 public:
-    TempFolder() {
-        std::string pattern = (std::filesystem::temp_directory_path() / "stoa-grader-test-XXXXXX").string();
-        if (!mkdtemp(pattern.data())) throw std::runtime_error("TempFolder: mkdtemp failed");
+    /// `purpose` becomes part of the folder's name, to tell leftovers apart.
+    explicit TempFolder(const std::string& purpose = "test") {
+        std::string pattern = (std::filesystem::temp_directory_path() / ("stoa-" + purpose + "-XXXXXX")).string();
+        if (!mkdtemp(pattern.data())) throw std::runtime_error("TempFolder: mkdtemp failed for " + pattern);
         m_path = pattern;
     }
     ~TempFolder() {
@@ -27,6 +30,7 @@ public:
     TempFolder& operator=(const TempFolder&) = delete;
 
     const std::filesystem::path& path() const { return m_path; }
+    std::filesystem::path operator/(const std::string& name) const { return m_path / name; }
 
     /// Writes `text` to path()/name (folders created) and returns the full path.
     std::filesystem::path write(const std::string& name, const std::string& text, bool executable = false) const {
