@@ -9,6 +9,7 @@ packages=(
   freeglut3-dev libglew-dev libglm-dev libstb-dev libtinyobjloader-dev
   libosmesa6-dev libegl-dev libgl1-mesa-dri
   catch2 xvfb xauth mkdocs
+  zip unzip python3
 )
 
 if ! command -v apt-get >/dev/null 2>&1; then

@@ -28,6 +28,17 @@ std::string errorReason(const ProcessOutcome& process) {
     return reason;
 }
 
+// "references/01_transforms/orbit_front.png, ..." (the last three path components).
+std::string changedList(const std::vector<std::filesystem::path>& files) {
+    std::string list;
+    for (const std::filesystem::path& file : files) {
+        std::filesystem::path shown = file.parent_path().parent_path().filename() / file.parent_path().filename() /
+                                      file.filename();
+        list += (list.empty() ? "" : ", ") + shown.string();
+    }
+    return list;
+}
+
 } // namespace
 
 std::string notAttemptedReason(const ProcessOutcome& process) {
@@ -50,6 +61,10 @@ RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings) {
         if (!settings.backend.empty()) {
             argv.push_back("--backend");
             argv.push_back(settings.backend);
+        }
+        if (!job.casesFile.empty()) {
+            argv.push_back("--cases");
+            argv.push_back(job.casesFile.string());
         }
         outcome.process = runProcess(argv, job.workDir, settings.limits);
 
@@ -86,7 +101,7 @@ RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings) {
     return outcome;
 }
 
-GradeResult gradeCase(const CaseJob& job, const RunSettings& settings) {
+GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, ReferenceGuard* guard) {
     GradeResult result;
     result.lab = job.lab;
     result.caseName = job.spec.name;
@@ -98,6 +113,15 @@ GradeResult gradeCase(const CaseJob& job, const RunSettings& settings) {
     result.seconds = render.process.seconds;
     result.programOutput = render.process.output;
     if (!render.imagePath.empty() && std::filesystem::exists(render.imagePath)) result.renderedImage = render.imagePath;
+    if (guard) {
+        std::vector<std::filesystem::path> changed = guard->verifyAndRestore();
+        if (!changed.empty()) {
+            result.status = GradeStatus::Error;
+            result.reason = "tried to modify the reference images (" + changedList(changed) +
+                            "); they were restored and the case fails";
+            return result;
+        }
+    }
     if (!render.rendered) {
         result.status = render.status;
         result.reason = render.reason;
@@ -105,18 +129,28 @@ GradeResult gradeCase(const CaseJob& job, const RunSettings& settings) {
     }
 
     try {
-        if (!std::filesystem::exists(job.reference)) {
-            result.status = GradeStatus::NoReference;
-            result.reason = kNoReference;
+        Image reference;
+        std::string decodeError;
+        if (guard) {
+            // The copy taken before any lab program ran.
+            if (const Image* guarded = guard->image(job.reference)) reference = *guarded;
+            decodeError = guard->decodeError(job.reference);
+        } else if (std::filesystem::exists(job.reference)) {
+            try {
+                reference = Image::load(job.reference);
+            } catch (const InputError& error) {
+                decodeError = error.message();
+            }
+        }
+        if (!decodeError.empty()) {
+            result.status = GradeStatus::Error;
+            result.reason = "the reference image does not decode (" + decodeError +
+                            "); regenerate it with stoa-grade --update-references";
             return result;
         }
-        Image reference;
-        try {
-            reference = Image::load(job.reference);
-        } catch (const InputError& error) {
-            result.status = GradeStatus::Error;
-            result.reason = "the reference image does not decode (" + error.message() +
-                            "); regenerate it with stoa-grade --update-references";
+        if (reference.empty()) {
+            result.status = GradeStatus::NoReference;
+            result.reason = kNoReference;
             return result;
         }
         if (reference.width() != job.spec.width || reference.height() != job.spec.height) {
@@ -128,6 +162,7 @@ GradeResult gradeCase(const CaseJob& job, const RunSettings& settings) {
         }
         CompareResult comparison = compareImages(render.image, reference, job.spec.compare);
         result.reason = comparison.summary;
+        result.metrics = metricsOf(comparison);
         if (comparison.passed) {
             result.status = GradeStatus::Passed;
             result.points = job.spec.points;

@@ -2,12 +2,13 @@
 // Renders one graded case with its lab program in a child process and grades
 // the image against the reference.
 //
-//   <program> --render CASE --output <workDir>/rendered.png [--backend osmesa|egl]
+//   <program> --render CASE --output <workDir>/rendered.png [--backend osmesa|egl] [--cases FILE]
 //     exit 0: the image is written;  exit 3: not attempted (a stub threw);
 //     exit 2: bad usage;  anything else: an error.
 
 #include "ChildProcess.hpp"
 #include "GradeResult.hpp"
+#include "ReferenceGuard.hpp"
 
 #include <stoa/image/Image.hpp>
 #include <stoa/lab/CaseManifest.hpp>
@@ -23,6 +24,7 @@ struct CaseJob {
     CaseSpec spec;                        // size, points, visibility, compare options
     std::filesystem::path reference;      // may not exist: the result is then "no reference"
     std::filesystem::path workDir;        // emptied and recreated; the program runs and writes there
+    std::filesystem::path casesFile;      // passed as --cases when not empty: a hidden case's manifest
 };
 
 struct RunSettings {
@@ -43,8 +45,10 @@ struct RenderOutcome {
 RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings);
 
 /// renderCase(), then the comparison with the reference; for a failed case the
-/// heat map is written to <workDir>/heatmap.png. Never throws.
-GradeResult gradeCase(const CaseJob& job, const RunSettings& settings);
+/// heat map is written to <workDir>/heatmap.png. Never throws. With a `guard`, the
+/// reference comes from the guard's copy, and a case after which a guarded file
+/// changed fails as "tried to modify the reference images" (the files are restored).
+GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, ReferenceGuard* guard = nullptr);
 
 /// The reason for exit status 3: "not implemented: Camera::viewMatrix()" from the
 /// program's last line "stoa: not implemented: Camera::viewMatrix()".

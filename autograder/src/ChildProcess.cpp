@@ -1,5 +1,7 @@
 #include "ChildProcess.hpp"
 
+#include "ProcessContainment.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
@@ -9,6 +11,7 @@
 #include <sstream>
 
 #include <fcntl.h>
+#include <sched.h>
 #include <poll.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -23,6 +26,8 @@
 #define STOA_GRADER_ASAN 1
 #endif
 #endif
+
+extern char** environ;
 
 namespace stoa::grader {
 
@@ -144,7 +149,10 @@ private:
 struct ChildSetup {
     std::vector<std::string> arguments;
     std::vector<char*> argv;
+    std::vector<std::string> environment;
+    std::vector<char*> envp;
     std::string workDir;
+    int unshareFlags = 0;
     struct Limit {
         int resource;
         rlimit value;
@@ -157,6 +165,20 @@ struct ChildSetup {
         rlim_t soft = wanted;
         if (current.rlim_max != RLIM_INFINITY && soft > current.rlim_max) soft = current.rlim_max;
         limits.push_back({resource, rlimit{soft, current.rlim_max}});
+    }
+
+    // The grader's environment with `overrides` ("NAME=value") replacing or adding entries.
+    void setEnvironment(const std::vector<std::string>& overrides) {
+        auto nameOf = [](const std::string& entry) { return entry.substr(0, entry.find('=')); };
+        for (char** entry = environ; entry && *entry; ++entry) {
+            std::string text = *entry;
+            bool replaced = std::any_of(overrides.begin(), overrides.end(),
+                                        [&](const std::string& o) { return nameOf(o) == nameOf(text); });
+            if (!replaced) environment.push_back(text);
+        }
+        environment.insert(environment.end(), overrides.begin(), overrides.end());
+        for (std::string& entry : environment) envp.push_back(entry.data());
+        envp.push_back(nullptr);
     }
 };
 
@@ -185,13 +207,18 @@ struct ChildSetup {
     syscall(SYS_close_range, 3u, ~0u, kCloseRangeCloexec);
 #endif
 
+    // No network: a fresh network namespace has only a loopback device, and it is
+    // down. Before the limits, so that the new user namespace records the grader's
+    // RLIMIT_NPROC for its parent level and the child's own applies inside it.
+    if (setup.unshareFlags != 0) unshare(setup.unshareFlags);
+
     // On failure the parent learns the step (0: chdir, 1: exec) and errno.
     int failure[2] = {0, 0};
     if (!setup.workDir.empty() && chdir(setup.workDir.c_str()) != 0) {
         failure[1] = errno;
     } else {
         for (const ChildSetup::Limit& limit : setup.limits) setrlimit(limit.resource, &limit.value);
-        execv(setup.argv[0], setup.argv.data());
+        execve(setup.argv[0], setup.argv.data(), setup.envp.data());
         failure[0] = 1;
         failure[1] = errno;
     }
@@ -236,7 +263,8 @@ bool drain(int fd, OutputCapture& capture) {
 ProcessLimits defaultLimits(double timeoutSeconds) {
     ProcessLimits limits;
     limits.timeoutSeconds = timeoutSeconds;
-    limits.cpuSeconds = timeoutSeconds + 5.0;
+    limits.cpuSeconds = timeoutSeconds * usableCores() + 5.0;
+    limits.environment.push_back("STOA_GL_CHECKED=1");
 #ifdef STOA_GRADER_ASAN
     limits.addressSpaceBytes = 0;
 #endif
@@ -247,6 +275,7 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
                           const ProcessLimits& limits) {
     ProcessOutcome outcome;
     outcome.timeoutSeconds = limits.timeoutSeconds;
+    outcome.maxProcesses = limits.maxProcesses;
     if (argv.empty() || argv[0].empty()) {
         outcome.startError = "no program given";
         return outcome;
@@ -261,6 +290,14 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
     if (limits.addressSpaceBytes > 0) setup.addLimit(RLIMIT_AS, limits.addressSpaceBytes);
     if (limits.fileSizeBytes > 0) setup.addLimit(RLIMIT_FSIZE, limits.fileSizeBytes);
     setup.addLimit(RLIMIT_CORE, 0);
+    setup.setEnvironment(limits.environment);
+    if (limits.isolateNetwork) setup.unshareFlags = networkIsolationFlags();
+    // RLIMIT_NPROC counts every task of the user; in the child's own user namespace
+    // only the child's. It does not bind root: the watchdog below is the guard there.
+    if (limits.maxTasks > 0 && getuid() != 0) {
+        bool ownCount = (setup.unshareFlags & CLONE_NEWUSER) != 0;
+        setup.addLimit(RLIMIT_NPROC, static_cast<rlim_t>(limits.maxTasks + (ownCount ? 0 : userTaskCount())));
+    }
 
     Pipe output;
     Pipe execStatus;
@@ -302,6 +339,8 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
     OutputCapture capture(limits.outputLimitBytes);
     bool pipeOpen = true;
     bool timedOut = false;
+    bool tooManyProcesses = false;
+    Clock::time_point lastCount = start;
     for (;;) {
         double remaining = limits.timeoutSeconds - secondsSince(start);
         if (remaining <= 0) {
@@ -315,21 +354,31 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
         poll(pipeOpen ? &entry : nullptr, pipeOpen ? 1 : 0, waitMs);
         if (pipeOpen) pipeOpen = drain(output.readEnd(), capture);
         if (childHasEnded(pid)) break;
+        // The fork-bomb watchdog, ten times a second (it reads /proc).
+        if (limits.maxProcesses > 0 && Clock::now() - lastCount >= std::chrono::milliseconds(100)) {
+            lastCount = Clock::now();
+            if (processGroupSize(pid) > limits.maxProcesses) {
+                tooManyProcesses = true;
+                break;
+            }
+        }
     }
 
     // Whatever is left of the group (the child if it timed out, grandchildren in
     // any case) goes now; then the last output is read and the child reaped.
     kill(-pid, SIGKILL);
-    if (timedOut) kill(pid, SIGKILL);
+    if (timedOut || tooManyProcesses) kill(pid, SIGKILL);
     int status = reap(pid);
     unregisterChild(pid);
     if (pipeOpen) drain(output.readEnd(), capture);
 
     outcome.seconds = secondsSince(start);
-    outcome.output = capture.text();
+    outcome.output = printableText(capture.text());
     outcome.outputTruncated = capture.truncated();
     if (timedOut) {
         outcome.ending = ProcessEnding::TimedOut;
+    } else if (tooManyProcesses) {
+        outcome.ending = ProcessEnding::TooManyProcesses;
     } else if (WIFSIGNALED(status)) {
         outcome.ending = ProcessEnding::Signalled;
         outcome.signal = WTERMSIG(status);
@@ -358,6 +407,8 @@ std::string ProcessOutcome::describe() const {
         return "crashed with " + describeSignal(signal);
     case ProcessEnding::TimedOut:
         return "timed out after " + formatSeconds(timeoutSeconds) + " s";
+    case ProcessEnding::TooManyProcesses:
+        return "started more than " + std::to_string(maxProcesses) + " processes (a fork bomb?) and was stopped";
     case ProcessEnding::FailedToStart:
         return startError;
     }

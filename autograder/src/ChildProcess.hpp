@@ -4,6 +4,14 @@
 // and kept to a few kilobytes, a wall-clock timeout after which the child's
 // whole process group is killed, and resource limits set in the child before
 // exec. The call always returns; nothing the child does can hang the grader.
+//
+// Containment, where the system allows it (ProcessContainment.hpp):
+//   - no network: the child unshares a user and a network namespace before exec;
+//   - a process count: RLIMIT_NPROC (this user's tasks now + a margin, or the
+//     margin alone inside the child's own user namespace), and a watchdog that
+//     kills the group once it holds more than `maxProcesses` processes (the only
+//     guard when the grader runs as root, whom RLIMIT_NPROC does not bind);
+//   - output made printable: binary bytes and control characters are replaced.
 
 #include <cstdint>
 #include <filesystem>
@@ -19,9 +27,15 @@ struct ProcessLimits {
     std::uint64_t addressSpaceBytes = 4ull << 30;         // RLIMIT_AS, 4 GiB
     std::uint64_t fileSizeBytes = 64ull << 20;            // RLIMIT_FSIZE, 64 MiB per file
     std::size_t outputLimitBytes = 4096;                  // captured output kept (head and tail)
+    std::size_t maxProcesses = 32;                        // processes in the child's group, the child included
+    std::size_t maxTasks = 256;                           // RLIMIT_NPROC margin: threads count (llvmpipe's ~cores)
+    bool isolateNetwork = true;                           // unshare the network where the OS allows it
+    std::vector<std::string> environment;                 // "NAME=value" set in the child's environment
 };
 
-/// The limits the grader uses for a given timeout: CPU time timeout + 5 s, and no
+/// The limits the grader uses for a given timeout: CPU time timeout x cores + 5 s
+/// (llvmpipe renders on one thread per core), STOA_GL_CHECKED=1 so that a GL error
+/// ends the lab program with a message naming the call, and no
 /// address-space limit when this program was built with AddressSanitizer (its
 /// shadow memory needs terabytes of address space; the lab programs share the build).
 ProcessLimits defaultLimits(double timeoutSeconds);
@@ -30,6 +44,7 @@ enum class ProcessEnding {
     Exited,          // returned from main or called exit(); see exitCode
     Signalled,       // killed by a signal it did not handle; see signal
     TimedOut,        // ran past timeoutSeconds and was killed
+    TooManyProcesses,// its group grew past maxProcesses (a fork bomb) and was killed
     FailedToStart,   // fork or exec failed; see startError
 };
 
@@ -39,13 +54,15 @@ struct ProcessOutcome {
     int signal = 0;                // valid when ending == Signalled
     double seconds = 0.0;          // wall-clock run time
     double timeoutSeconds = 0.0;   // the limit it ran under, for describe()
-    std::string output;            // stdout and stderr interleaved, possibly truncated
+    std::string output;            // stdout and stderr interleaved, possibly truncated, printable UTF-8
+    std::size_t maxProcesses = 0;  // the limit it ran under, for describe()
     bool outputTruncated = false;  // true when `output` left bytes out (a marker line says how many)
     std::string startError;        // why it did not start (FailedToStart only)
 
     bool exitedWith(int code) const { return ending == ProcessEnding::Exited && exitCode == code; }
     /// One line: "exited with status 1", "crashed with SIGSEGV (segmentation fault)",
-    /// "timed out after 60 s", "could not start /x/y: No such file or directory".
+    /// "timed out after 60 s", "could not start /x/y: No such file or directory",
+    /// "started more than 32 processes (a fork bomb?) and was stopped".
     std::string describe() const;
     /// The last non-empty line of `output` ("" when there is none).
     std::string lastOutputLine() const;

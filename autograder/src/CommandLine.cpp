@@ -9,8 +9,8 @@ namespace stoa::grader {
 namespace {
 
 const char* const kOptionList =
-    "--lab, --case, --bin-dir, --backend, --json, --timeout, --jobs, --work-dir, --expect, "
-    "--update-references, --check-mistakes, --help";
+    "--lab, --case, --bin-dir, --backend, --json, --html, --junit, --timeout, --jobs, --work-dir, --expect, "
+    "--update-references, --check-mistakes, --determinism, --help";
 
 double parsePositiveNumber(const std::string& option, const std::string& text) {
     errno = 0;
@@ -36,6 +36,7 @@ Options parseCommandLine(const std::vector<std::string>& arguments) {
     Options options;
     bool updateReferences = false;
     bool checkMistakes = false;
+    bool determinism = false;
     bool help = false;
 
     for (std::size_t i = 0; i < arguments.size(); ++i) {
@@ -73,6 +74,10 @@ Options parseCommandLine(const std::vector<std::string>& arguments) {
                 throw UsageError("--backend must be osmesa or egl, got '" + options.backend + "'");
         } else if (option == "--json") {
             options.jsonFile = takeValue("a file to write, such as results.json");
+        } else if (option == "--html") {
+            options.htmlFile = takeValue("a file to write, such as report.html");
+        } else if (option == "--junit") {
+            options.junitFile = takeValue("a file to write, such as junit.xml");
         } else if (option == "--timeout") {
             options.timeoutSeconds = parsePositiveNumber(option, takeValue("a number of seconds"));
         } else if (option == "--jobs") {
@@ -90,6 +95,9 @@ Options parseCommandLine(const std::vector<std::string>& arguments) {
         } else if (option == "--update-references") {
             noValue();
             updateReferences = true;
+        } else if (option == "--determinism") {
+            noValue();
+            determinism = true;
         } else if (option == "--check-mistakes") {
             noValue();
             checkMistakes = true;
@@ -112,11 +120,20 @@ Options parseCommandLine(const std::vector<std::string>& arguments) {
         throw UsageError("--update-references and --check-mistakes cannot be combined; run them one after the other");
     if (updateReferences) options.mode = Mode::UpdateReferences;
     if (checkMistakes) options.mode = Mode::CheckMistakes;
+    if (determinism && (updateReferences || checkMistakes))
+        throw UsageError("--determinism cannot be combined with --update-references or --check-mistakes");
+    if (determinism) options.mode = Mode::Determinism;
     if (options.mode != Mode::Grade) {
-        const char* modeName = updateReferences ? "--update-references" : "--check-mistakes";
+        const char* modeName = updateReferences ? "--update-references"
+                               : checkMistakes  ? "--check-mistakes"
+                                                : "--determinism";
         if (options.expect) throw UsageError(std::string("--expect only applies to grading, not to ") + modeName);
         if (!options.jsonFile.empty())
             throw UsageError(std::string("--json only applies to grading, not to ") + modeName);
+        if (!options.htmlFile.empty())
+            throw UsageError(std::string("--html only applies to grading, not to ") + modeName);
+        if (!options.junitFile.empty())
+            throw UsageError(std::string("--junit only applies to grading, not to ") + modeName);
     }
     if (checkMistakes && !options.cases.empty())
         throw UsageError("--check-mistakes checks the cases each mistake names in 'fails:'; drop --case");
@@ -130,6 +147,8 @@ usage:
   stoa-grade [--lab NN_name|NN]... [--case NAME]... [options]   grade (every built lab by default)
   stoa-grade --update-references [--lab ...] [--case ...]       write reference images (solutions build)
   stoa-grade --check-mistakes [--lab ...]                       check that each planted mistake is caught
+  stoa-grade --determinism [--lab ...] [--case ...]             render each case twice and with LP_NUM_THREADS=1
+                                                                and 2; exit 1 on any difference
   stoa-grade --help
 
 options:
@@ -138,6 +157,8 @@ options:
   --bin-dir DIR            where the lab programs are (default: the folder of stoa-grade)
   --backend osmesa|egl     the headless context the lab programs use (default: theirs)
   --json FILE              also write Gradescope's results.json to FILE
+  --html FILE              also write a self-contained HTML report (images, metrics, hints) to FILE
+  --junit FILE             also write JUnit XML (one testsuite per lab) to FILE
   --timeout SECONDS        wall-clock limit per case (default 60)
   --jobs N                 render N cases at once (default 1)
   --work-dir DIR           where rendered images and heat maps go (default: a new temp folder)

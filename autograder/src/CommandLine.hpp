@@ -2,10 +2,11 @@
 // stoa-grade's command line.
 //
 //   stoa-grade [--lab NN_name|NN]... [--case NAME]... [--bin-dir DIR] [--backend osmesa|egl]
-//              [--json FILE] [--timeout SECONDS] [--jobs N] [--work-dir DIR]
+//              [--json FILE] [--html FILE] [--junit FILE] [--timeout SECONDS] [--jobs N] [--work-dir DIR]
 //              [--expect pass|not-attempted]
 //   stoa-grade --update-references [--lab ...] [--case ...]
 //   stoa-grade --check-mistakes [--lab ...]
+//   stoa-grade --determinism [--lab ...] [--case ...]
 //   stoa-grade --help
 //
 // Options take their value as the next argument or after '=' (--jobs=4).
@@ -27,7 +28,7 @@ public:
     explicit UsageError(const std::string& message) : InputError("", 0, message) {}
 };
 
-enum class Mode { Grade, UpdateReferences, CheckMistakes, Help };
+enum class Mode { Grade, UpdateReferences, CheckMistakes, Determinism, Help };
 
 struct Options {
     Mode mode = Mode::Grade;
@@ -36,6 +37,8 @@ struct Options {
     std::filesystem::path binDir;             // empty = the folder stoa-grade runs from
     std::string backend;                      // "osmesa", "egl", or empty for the lab program's default
     std::filesystem::path jsonFile;           // Gradescope results.json; empty = none
+    std::filesystem::path htmlFile;           // the self-contained HTML report; empty = none
+    std::filesystem::path junitFile;          // JUnit XML; empty = none
     double timeoutSeconds = 60.0;             // per case, wall clock
     int jobs = 1;                             // cases rendered at once
     std::filesystem::path workDir;            // empty = a fresh folder under the system's temp dir

@@ -1,6 +1,9 @@
 #include "GradeCommand.hpp"
 
 #include "Grader.hpp"
+#include "Hints.hpp"
+#include "HtmlReport.hpp"
+#include "JunitReport.hpp"
 #include "Report.hpp"
 #include "ResultsJson.hpp"
 
@@ -53,11 +56,13 @@ int runGrade(const Options& options, const Environment& env) {
         jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
     }
 
+    HintGallery gallery = HintGallery::load(jobs);   // read before any lab program runs
     std::vector<GradeResult> results =
         gradeCases(jobs, runSettings(options), options.jobs,
                    [&](std::size_t, const GradeResult& result, std::size_t done, std::size_t total) {
                        env.err << progressLine(result, done, total) << std::endl;
                    });
+    addHints(results, jobs, gallery, options.jobs);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     Totals totals = summarize(results);
@@ -70,6 +75,16 @@ int runGrade(const Options& options, const Environment& env) {
     if (!options.jsonFile.empty()) {
         writeResultsJson(options.jsonFile, results, totals, seconds, summaryText(totals));
         env.out << "wrote " << options.jsonFile.string() << "\n";
+    }
+    if (!options.htmlFile.empty()) {
+        HtmlReportOptions html;
+        html.docsBaseUrl = "file://" + std::filesystem::absolute(env.sourceDir).string() + "/";
+        writeHtmlReport(options.htmlFile, results, totals, html);
+        env.out << "wrote " << options.htmlFile.string() << "\n";
+    }
+    if (!options.junitFile.empty()) {
+        writeJunitXml(options.junitFile, results);
+        env.out << "wrote " << options.junitFile.string() << "\n";
     }
 
     bool keep = !options.workDir.empty() || std::any_of(results.begin(), results.end(), worthKeeping);

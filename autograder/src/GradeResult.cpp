@@ -1,6 +1,32 @@
 #include "GradeResult.hpp"
 
+#include <type_traits>
+#include <utility>
+
 namespace stoa::grader {
+
+namespace {
+
+// The FLIP mean, where CompareResult has one (it is read through this trait so
+// the grader builds against a compare without the perceptual metric too).
+template <typename T, typename = void>
+struct HasFlipMean : std::false_type {};
+template <typename T>
+struct HasFlipMean<T, std::void_t<decltype(std::declval<const T&>().flipMean)>> : std::true_type {};
+
+template <typename T>
+double flipMeanOf(const T& comparison) {
+    if constexpr (HasFlipMean<T>::value)
+        return static_cast<double>(comparison.flipMean);
+    else
+        return -1.0;
+}
+
+} // namespace
+
+CompareMetrics metricsOf(const CompareResult& comparison) {
+    return CompareMetrics{comparison.badFraction, comparison.meanError, comparison.maxError, flipMeanOf(comparison)};
+}
 
 const char* statusName(GradeStatus status) {
     switch (status) {

@@ -2,9 +2,11 @@
 // The outcome of grading one case: its status, the reason in one line, the
 // points it earned, and where its images are.
 
+#include <stoa/image/ImageCompare.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace stoa::grader {
@@ -16,6 +18,18 @@ enum class GradeStatus {
     Error,          // crash, timeout, nonzero exit, missing or unreadable image, wrong size
     NoReference,    // rendered, but there is no reference image to compare with
 };
+
+/// The figures of a comparison with the reference, without its per-pixel maps
+/// (results of a whole class are kept in memory at once).
+struct CompareMetrics {
+    double badFraction = 1.0;   // fraction of pixels beyond the tolerance, in [0, 1]
+    double meanError = 255.0;   // mean shift-tolerant difference, 0..255
+    int maxError = 255;         // largest shift-tolerant difference, 0..255
+    double flipMean = -1.0;     // mean LDR-FLIP error in [0, 1]; < 0 when not computed
+};
+
+/// The figures of `comparison`.
+CompareMetrics metricsOf(const CompareResult& comparison);
 
 /// "passed", "failed", "not attempted", "error", "no reference".
 const char* statusName(GradeStatus status);
@@ -33,9 +47,17 @@ struct GradeResult {
     std::filesystem::path renderedImage;   // the student's image (empty when none was written)
     std::filesystem::path heatMapImage;    // written for failed cases of the right size
     std::filesystem::path referenceImage;
+    std::optional<CompareMetrics> metrics; // set when the image was compared with the reference
+
+    // A failed case whose image is closer to a known mistake's (the lab's
+    // mistake gallery) than to the reference carries that mistake's hint.
+    std::string hint;                      // the mistake's `hint:` text; empty when no mistake is closer
+    std::string hintDocs;                  // "docs/labs/02_shading.md#the-half-vector"; empty when none
+    std::string hintMistake;               // the mistake's name, "no_half_vector"
 
     /// "01_transforms/orbit_front"
     std::string fullName() const { return lab + "/" + caseName; }
+    bool hasHint() const { return !hint.empty(); }
 };
 
 } // namespace stoa::grader

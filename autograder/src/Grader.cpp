@@ -30,10 +30,14 @@ void forEachInParallel(std::size_t count, int jobs, const std::function<void(std
 std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunSettings& settings, int parallelJobs,
                                     const ProgressCallback& progress) {
     std::vector<GradeResult> results(jobs.size());
+    // Every reference is read (and kept) before the first lab program runs.
+    std::vector<std::filesystem::path> references;
+    for (const CaseJob& job : jobs) references.push_back(job.reference);
+    ReferenceGuard guard(references);
     std::mutex progressMutex;
     std::size_t done = 0;
     forEachInParallel(jobs.size(), parallelJobs, [&](std::size_t i) {
-        results[i] = gradeCase(jobs[i], settings);
+        results[i] = gradeCase(jobs[i], settings, &guard);
         std::lock_guard<std::mutex> lock(progressMutex);
         ++done;
         if (progress) progress(i, results[i], done, jobs.size());

@@ -22,7 +22,10 @@ void forEachInParallel(std::size_t count, int jobs, const std::function<void(std
 using ProgressCallback =
     std::function<void(std::size_t index, const GradeResult& result, std::size_t done, std::size_t total)>;
 
-/// Grades every job; the results come back in the order of `jobs`.
+/// Grades every job; the results come back in the order of `jobs`. The reference
+/// images are guarded (ReferenceGuard) while the lab programs run: a case after
+/// which one changed fails, and the file is restored. With several jobs at once,
+/// the blame falls on the case that finished first after the change.
 std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunSettings& settings, int parallelJobs,
                                     const ProgressCallback& progress = {});
 

@@ -82,6 +82,19 @@ std::filesystem::path referenceImagePath(const std::filesystem::path& sourceDir,
     return sourceDir / "autograder" / "references" / lab / (caseName + ".png");
 }
 
+std::filesystem::path hiddenManifestPath(const std::filesystem::path& sourceDir, const std::string& lab) {
+    return sourceDir / "solutions" / lab / "hidden_cases.ini";
+}
+
+std::filesystem::path hiddenReferenceImagePath(const std::filesystem::path& sourceDir, const std::string& lab,
+                                               const std::string& caseName) {
+    return sourceDir / "solutions" / lab / "references" / (caseName + ".png");
+}
+
+std::filesystem::path cascadeProgram(const std::filesystem::path& binDir, const std::string& lab) {
+    return binDir / "cascade" / programName(lab);
+}
+
 bool isExecutable(const std::filesystem::path& path) {
     std::error_code error;
     return std::filesystem::is_regular_file(path, error) && access(path.c_str(), X_OK) == 0;

@@ -7,6 +7,8 @@
 //   <bin>/lab01_transforms                               the lab's program ("lab" + folder name)
 //   <bin>/mistakes/01_transforms.MISTAKE/lab01_transforms   one program per planted mistake
 //   autograder/references/01_transforms/CASE.png         the reference images
+//   solutions/01_transforms/hidden_cases.ini             hidden cases (only where solutions/ exists)
+//   solutions/01_transforms/references/CASE.png          their references (not in the student release)
 
 #include <filesystem>
 #include <string>
@@ -40,6 +42,18 @@ std::filesystem::path mistakeProgram(const std::filesystem::path& binDir, const 
 /// <sourceDir>/autograder/references/<lab>/<caseName>.png
 std::filesystem::path referenceImagePath(const std::filesystem::path& sourceDir, const std::string& lab,
                                          const std::string& caseName);
+
+/// <sourceDir>/solutions/<lab>/hidden_cases.ini: the lab's hidden cases, in the
+/// manifest format; they ship with the solutions, so never to students.
+std::filesystem::path hiddenManifestPath(const std::filesystem::path& sourceDir, const std::string& lab);
+
+/// <sourceDir>/solutions/<lab>/references/<caseName>.png: a hidden case's reference.
+std::filesystem::path hiddenReferenceImagePath(const std::filesystem::path& sourceDir, const std::string& lab,
+                                               const std::string& caseName);
+
+/// <binDir>/cascade/lab01_transforms: the lab's student code with the earlier labs'
+/// solutions linked in (built where solutions exist; see StoaLab.cmake).
+std::filesystem::path cascadeProgram(const std::filesystem::path& binDir, const std::string& lab);
 
 /// True when `path` is a regular file this user may execute.
 bool isExecutable(const std::filesystem::path& path);

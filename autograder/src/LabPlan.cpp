@@ -1,5 +1,7 @@
 #include "LabPlan.hpp"
 
+#include <stoa/core/InputError.hpp>
+
 #include <algorithm>
 
 namespace stoa::grader {
@@ -13,6 +15,9 @@ std::vector<PlannedLab> planLabs(const Options& options, const Environment& env,
         lab.lab = entry.lab;
         lab.manifest = loadManifest(entry.manifestPath);
         lab.program = labProgram(env.binDir, entry.lab);
+        std::filesystem::path hidden = hiddenManifestPath(env.sourceDir, entry.lab);
+        std::error_code error;
+        if (std::filesystem::is_regular_file(hidden, error)) addHiddenCases(lab, hidden);
         for (const CaseSpec& spec : lab.manifest.cases)
             if (options.cases.empty() ||
                 std::find(options.cases.begin(), options.cases.end(), spec.name) != options.cases.end())
@@ -43,12 +48,35 @@ std::vector<PlannedLab> planLabs(const Options& options, const Environment& env,
     return kept;
 }
 
+void addHiddenCases(PlannedLab& lab, const std::filesystem::path& hiddenManifest) {
+    LabManifest hidden = loadManifest(hiddenManifest);
+    if (hidden.lab != lab.lab)
+        throw InputError(hidden.file, 0, "says lab = " + hidden.lab + ", but it is in the folder of lab " + lab.lab);
+    for (CaseSpec& spec : hidden.cases) {
+        if (lab.manifest.find(spec.name))
+            throw InputError(hidden.file, spec.line, "hidden case '" + spec.name + "' has the name of a case in " +
+                                                         lab.manifest.file + "; give it another name");
+        spec.visibility = Visibility::Hidden;   // implied by where it lives
+        lab.manifest.cases.push_back(std::move(spec));
+    }
+    lab.hiddenManifest = hiddenManifest;
+}
+
 std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path& program,
                               const std::filesystem::path& sourceDir, const std::filesystem::path& workDir) {
     std::vector<CaseJob> jobs;
-    for (const CaseSpec& spec : lab.cases)
-        jobs.push_back(CaseJob{lab.lab, program, spec, referenceImagePath(sourceDir, lab.lab, spec.name),
-                               workDir / lab.lab / spec.name});
+    for (const CaseSpec& spec : lab.cases) {
+        bool hidden = !lab.hiddenManifest.empty() && std::filesystem::path(spec.file) == lab.hiddenManifest;
+        CaseJob job;
+        job.lab = lab.lab;
+        job.program = program;
+        job.spec = spec;
+        job.reference = hidden ? hiddenReferenceImagePath(sourceDir, lab.lab, spec.name)
+                               : referenceImagePath(sourceDir, lab.lab, spec.name);
+        job.workDir = workDir / lab.lab / spec.name;
+        if (hidden) job.casesFile = lab.hiddenManifest;
+        jobs.push_back(std::move(job));
+    }
     return jobs;
 }
 

@@ -1,6 +1,7 @@
 #include "MistakeCheck.hpp"
 
 #include "Grader.hpp"
+#include "Hints.hpp"
 #include "Report.hpp"
 
 #include <algorithm>
@@ -45,10 +46,28 @@ MistakeVerdict judgeMistake(const MistakeFile& mistake, const std::vector<GradeR
             std::find(mistake.fails.begin(), mistake.fails.end(), result.caseName) == mistake.fails.end())
             alsoFails.push_back(result.caseName);
 
+    // The hint must name the mistake on at least one case it fails: that is what
+    // a student with this bug would read.
+    bool hintNamesIt = false;
+    std::vector<std::string> hintNotes;
+    for (const std::string& name : mistake.fails) {
+        auto result = std::find_if(results.begin(), results.end(),
+                                   [&](const GradeResult& entry) { return entry.caseName == name; });
+        if (result == results.end() || result->status != GradeStatus::Failed) continue;
+        if (result->hintMistake == mistake.name) hintNamesIt = true;
+        else hintNotes.push_back(name + ": " + (result->hasHint() ? "hint names " + result->hintMistake : "no hint"));
+    }
+    if (problems.empty() && !hintNamesIt) {
+        std::string notes;
+        for (std::size_t i = 0; i < hintNotes.size(); ++i) notes += (i ? "; " : "") + hintNotes[i];
+        problems.push_back("no failed case's hint names this mistake (" + notes +
+                           "); regenerate the gallery with stoa-grade --update-references");
+    }
+
     MistakeVerdict verdict;
     verdict.caught = problems.empty();
     if (verdict.caught) {
-        verdict.detail = "caught";
+        verdict.detail = "caught, hint ok";
     } else {
         verdict.detail = "NOT caught: ";
         for (std::size_t i = 0; i < problems.size(); ++i) verdict.detail += (i ? "; " : "") + problems[i];
@@ -112,11 +131,13 @@ int runCheckMistakes(const Options& options, const Environment& env) {
     for (const MistakeRun& run : runs)
         for (std::size_t i = run.firstJob; i < run.firstJob + run.jobCount; ++i)
             labels[i] = "mistake " + run.mistake.name;
+    HintGallery gallery = HintGallery::load(jobs);   // read before any lab program runs
     std::vector<GradeResult> results = gradeCases(
         jobs, runSettings(options), options.jobs,
         [&](std::size_t index, const GradeResult& result, std::size_t done, std::size_t total) {
             env.err << progressLine(result, done, total, labels[index]) << std::endl;
         });
+    addHints(results, jobs, gallery, options.jobs);
 
     std::size_t nameWidth = 7, failsWidth = 10;
     for (const MistakeRun& run : runs) {

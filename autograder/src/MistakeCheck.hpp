@@ -2,7 +2,9 @@
 // `stoa-grade --check-mistakes`: each planted mistake (a solution with one bug,
 // built to <bin>/mistakes/<lab>.<mistake>/) must fail the cases its `fails:`
 // line names -- fail as "failed", a wrong image, not as an error or "not
-// attempted". Prints one row per mistake; exit 1 if any is not caught.
+// attempted" -- and on at least one of them the known-mistake hint (from the
+// gallery, see Hints.hpp) must name that very mistake. Prints one row per
+// mistake; exit 1 if any is not caught.
 
 #include "CommandLine.hpp"
 #include "GradeResult.hpp"
@@ -16,7 +18,7 @@ namespace stoa::grader {
 
 struct MistakeVerdict {
     bool caught = false;
-    std::string detail;   // "caught", or what went wrong: "orbit_front passed", "fails: names unknown case x"
+    std::string detail;   // "caught, hint ok", or what went wrong: "orbit_front passed", "fails: names unknown case x"
 };
 
 /// Whether `results` (the mistake program's results for its lab) catch `mistake`.

@@ -1,6 +1,7 @@
 #include "ReferenceUpdate.hpp"
 
 #include "Grader.hpp"
+#include "MistakeGallery.hpp"
 
 #include <stoa/core/InputError.hpp>
 #include <stoa/image/ImageCompare.hpp>
@@ -20,17 +21,19 @@ bool samePixels(const Image& a, const Image& b) {
            std::memcmp(a.data(), b.data(), a.sizeInBytes()) == 0;
 }
 
-// Writes or keeps one reference; returns the line to print and sets `ok`.
-std::string updateOne(const CaseJob& job, const RenderOutcome& render, bool& ok) {
+} // namespace
+
+std::string writeOrKeepImage(const std::filesystem::path& target, const CompareOptions& compare,
+                             const RenderOutcome& render, bool& ok) {
     ok = false;
     if (!render.rendered) return std::string(statusName(render.status)) + ": " + render.reason;
     std::error_code error;
-    bool existed = std::filesystem::exists(job.reference, error);
+    bool existed = std::filesystem::exists(target, error);
     std::string verdict = "new";
     if (existed) {
         Image previous;
         try {
-            previous = Image::load(job.reference);
+            previous = Image::load(target);
         } catch (const InputError&) {
             previous = Image();
         }
@@ -41,7 +44,7 @@ std::string updateOne(const CaseJob& job, const RenderOutcome& render, bool& ok)
         if (previous.empty()) {
             verdict = "changed (the old reference did not decode)";
         } else {
-            CompareResult comparison = compareImages(render.image, previous, job.spec.compare);
+            CompareResult comparison = compareImages(render.image, previous, compare);
             if (comparison.passed) {
                 ok = true;
                 return "unchanged (within tolerance: " + comparison.summary + ")";
@@ -49,15 +52,12 @@ std::string updateOne(const CaseJob& job, const RenderOutcome& render, bool& ok)
             verdict = "changed (" + comparison.summary + ")";
         }
     }
-    std::filesystem::create_directories(job.reference.parent_path(), error);
-    std::filesystem::copy_file(render.imagePath, job.reference, std::filesystem::copy_options::overwrite_existing,
-                               error);
-    if (error) return "error: cannot write " + job.reference.string() + ": " + error.message();
+    std::filesystem::create_directories(target.parent_path(), error);
+    std::filesystem::copy_file(render.imagePath, target, std::filesystem::copy_options::overwrite_existing, error);
+    if (error) return "error: cannot write " + target.string() + ": " + error.message();
     ok = true;
     return verdict;
 }
-
-} // namespace
 
 std::string trackFromInfo(const std::string& infoOutput) {
     std::istringstream lines(infoOutput);
@@ -103,25 +103,45 @@ int runUpdateReferences(const Options& options, const Environment& env) {
         std::vector<CaseJob> labJobs = caseJobs(lab, lab.program, env.sourceDir, workDir);
         jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
     }
-    std::vector<RenderOutcome> renders(jobs.size());
+    // The planted mistakes' renders for the gallery go in the same parallel pass.
+    std::vector<std::string> notes;
+    std::vector<GalleryJob> gallery = galleryJobs(labs, env, workDir, notes);
+    for (const std::string& note : notes) env.err << note << "\n";
+    std::vector<CaseJob> allJobs = jobs;
+    for (const GalleryJob& job : gallery) allJobs.push_back(job.job);
+
+    std::vector<RenderOutcome> renders(allJobs.size());
     std::mutex progressMutex;
     std::size_t done = 0;
-    forEachInParallel(jobs.size(), options.jobs, [&](std::size_t i) {
-        renders[i] = renderCase(jobs[i], settings);
+    forEachInParallel(allJobs.size(), options.jobs, [&](std::size_t i) {
+        renders[i] = renderCase(allJobs[i], settings);
         std::lock_guard<std::mutex> lock(progressMutex);
-        env.err << "[" << ++done << "/" << jobs.size() << "] " << jobs[i].lab << "/" << jobs[i].spec.name << " ... "
+        env.err << "[" << ++done << "/" << allJobs.size() << "] "
+                << (i < jobs.size() ? "" : "mistake " + gallery[i - jobs.size()].mistake.name + ": ")
+                << allJobs[i].lab << "/" << allJobs[i].spec.name << " ... "
                 << (renders[i].rendered ? "rendered" : statusName(renders[i].status)) << std::endl;
     });
 
     int failures = 0;
     for (std::size_t i = 0; i < jobs.size(); ++i) {
         bool ok = false;
-        std::string line = updateOne(jobs[i], renders[i], ok);
+        std::string line = writeOrKeepImage(jobs[i].reference, jobs[i].spec.compare, renders[i], ok);
         if (!ok) ++failures;
         env.out << jobs[i].lab << "/" << jobs[i].spec.name << ": " << line << "\n";
     }
     env.out << "references in " << (env.sourceDir / "autograder" / "references").string() << ": "
             << jobs.size() - failures << " of " << jobs.size() << " up to date\n";
+
+    if (!gallery.empty() || !notes.empty()) {
+        std::vector<RenderOutcome> galleryRenders(renders.begin() + jobs.size(), renders.end());
+        GallerySummary summary =
+            updateGallery(gallery, galleryRenders, labs, env, options.cases.empty(), env.out);
+        env.out << "gallery: " << summary.images << " images (" << summary.written << " new or changed, "
+                << summary.removed << " removed";
+        if (summary.problems > 0) env.out << ", " << summary.problems << " problems";
+        env.out << ") in autograder/references/<lab>/mistakes/\n";
+        failures += summary.problems;
+    }
 
     if (failures > 0) {
         env.out << "rendered images: " << workDir.string() << "\n";

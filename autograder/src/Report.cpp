@@ -102,6 +102,7 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
             << padded(statusName(result.status), statusWidth) << "  "
             << padded(shortened(result.reason, kReasonColumnWidth), reasonWidth) << "  "
             << formatPoints(result.points) << " / " << formatPoints(result.maxPoints) << "\n";
+        if (result.hasHint()) out << hintLine(result, labWidth + 2) << "\n";
     }
 
     bool headerPrinted = false;
@@ -134,6 +135,14 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
         out << padded("total", labWidth) << "  " << formatPoints(totals.points) << " / "
             << formatPoints(totals.maxPoints) << " points  (" << totals.statuses.describe() << ")\n";
     out << "score: " << formatPoints(totals.points) << " / " << formatPoints(totals.maxPoints) << "\n";
+}
+
+std::string hintLine(const GradeResult& result, std::size_t indent) {
+    if (!result.hasHint()) return "";
+    std::string line = std::string(indent, ' ') + "hint: looks like the known mistake '" + result.hintMistake +
+                       "': " + result.hint;
+    if (!result.hintDocs.empty()) line += " (read " + result.hintDocs + ")";
+    return line;
 }
 
 std::vector<std::string> hints(const Totals& totals) {

@@ -49,10 +49,16 @@ bool allHaveStatus(const std::vector<GradeResult>& results, GradeStatus status);
 /// Points as a person writes them: "10", "2.5", "0.25".
 std::string formatPoints(double points);
 
-/// The table (lab, case, status, error, points), the details of every case that
+/// The table (lab, case, status, error, points; a hint line under a case that
+/// looks like a known mistake), the details of every case that
 /// did not pass (full reason, image paths, the end of the program's output),
 /// the totals per lab and overall, and the final line "score: X / Y".
 void printReport(std::ostream& out, const std::vector<GradeResult>& results, const Totals& totals);
+
+/// The line printed under a case that carries a known-mistake hint:
+/// "<indent>hint: looks like the known mistake 'no_half_vector': The specular
+/// term ... (read docs/labs/02_shading.md#the-half-vector)"; "" without a hint.
+std::string hintLine(const GradeResult& result, std::size_t indent = 0);
 
 /// One line per lab where nothing was attempted yet, pointing at its docs page:
 /// "lab 01_transforms: nothing attempted yet -- start with docs/labs/01_transforms.md".

@@ -27,6 +27,10 @@ std::string testOutput(const GradeResult& result) {
     std::string text = statusName(result.status);
     if (!result.reason.empty()) text += ": " + result.reason;
     text += "\n";
+    if (result.hasHint()) {
+        text += "\nHint: this image looks most like the known mistake '" + result.hintMistake + "': " + result.hint + "\n";
+        if (!result.hintDocs.empty()) text += "Read " + result.hintDocs + "\n";
+    }
     if ((result.status == GradeStatus::Error || result.status == GradeStatus::NotAttempted) &&
         !result.programOutput.empty())
         text += "\nThe program's output:\n" + result.programOutput + "\n";
@@ -64,6 +68,13 @@ std::string resultsJson(const std::vector<GradeResult>& results, const Totals& t
         json.key("output").value(testOutput(result));
         json.key("tags").beginArray().value(result.lab).value(statusName(result.status)).endArray();
         json.key("visibility").value(result.visibility == Visibility::Hidden ? "after_published" : "visible");
+        json.key("extra_data").beginObject();
+        json.key("render_seconds").value(result.seconds);
+        if (result.hasHint()) {
+            json.key("hint_mistake").value(result.hintMistake);
+            json.key("hint_docs").value(result.hintDocs);
+        }
+        json.endObject();
         json.endObject();
     }
     json.endArray();

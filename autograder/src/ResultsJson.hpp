@@ -5,9 +5,14 @@
 //     "stdout_visibility": "hidden",
 //     "tests": [ { "score": 10, "max_score": 10, "status": "passed",
 //                  "name": "01_transforms/orbit_front", "number": "1.1",
-//                  "output": "...", "tags": ["01_transforms"], "visibility": "visible" }, ... ] }
+//                  "output": "...", "tags": ["01_transforms"], "visibility": "visible",
+//                  "extra_data": { "render_seconds": 0.8, "hint_mistake": "...", "hint_docs": "..." } },
+//                ... ] }
 //
-// Only keys the specification documents are written. Hidden cases get the
+// Only keys the specification documents are written: it has execution_time at
+// the top level only (whole seconds), so a case's render time goes in its
+// extra_data, as do the known-mistake hint's name and docs path (the hint's
+// text is in the case's output, where students see it). Hidden cases get the
 // visibility "after_published": students see them once the instructor
 // publishes the grades. The grader's own stdout stays hidden from students.
 

@@ -3,6 +3,7 @@
 
 #include "ChildProcess.hpp"
 #include "CommandLine.hpp"
+#include "DeterminismCheck.hpp"
 #include "GradeCommand.hpp"
 #include "LabCatalog.hpp"
 #include "LabPlan.hpp"
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
         case Mode::Grade: return runGrade(options, env);
         case Mode::UpdateReferences: return runUpdateReferences(options, env);
         case Mode::CheckMistakes: return runCheckMistakes(options, env);
+        case Mode::Determinism: return runDeterminismCheck(options, env);
         case Mode::Help: break;
         }
         return 0;

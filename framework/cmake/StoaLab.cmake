@@ -7,6 +7,8 @@
 #   stubs      labs/, built beside a solutions build for the tests       -> build/bin/stubs/
 #   mistake    a solution with one planted mistake (solutions/NN/mistakes/*.mistake)
 #                                                                         -> build/bin/mistakes/NN_name.MISTAKE/
+#   equivalent a solution rewritten another valid way (solutions/NN/equivalents/*.equivalent)
+#                                                                         -> build/bin/equivalents/NN_name.NAME/
 #
 #   stoa_add_lab(NAME 01_transforms
 #                STUDENT_FILES transforms.cpp camera_controls.cpp   # C++ and GLSL, twins in solutions/
@@ -17,9 +19,20 @@
 # student's own earlier code. Student GLSL is read at run time through a search
 # path baked into each program: [mistake overlay,] track root, shaders/.
 
-set(STOA_LABS_DIR ${CMAKE_SOURCE_DIR}/labs)
-set(STOA_SOLUTIONS_DIR ${CMAKE_SOURCE_DIR}/solutions)
-if(STOA_USE_SOLUTIONS)
+# STOA_ROOT_DIR is the Stoa source tree: this project's, or the framework's when a
+# submission is built against an exported framework (autograder/submission/).
+if(NOT STOA_ROOT_DIR)
+  set(STOA_ROOT_DIR ${CMAKE_SOURCE_DIR})
+endif()
+set(STOA_LABS_DIR ${STOA_ROOT_DIR}/labs)
+set(STOA_SOLUTIONS_DIR ${STOA_ROOT_DIR}/solutions)
+# STOA_TRACK_DIR builds the main track from a student's labs/ tree instead: only
+# the student files each lab declares are copied from it (into <build>/track).
+set(STOA_TRACK_DIR "" CACHE PATH "Build the labs from this folder (a student's labs/ tree) instead of labs/")
+if(STOA_TRACK_DIR)
+  set(STOA_MAIN_TRACK_DIR ${CMAKE_BINARY_DIR}/track)
+  set(STOA_MAIN_TRACK_NAME submission)
+elseif(STOA_USE_SOLUTIONS)
   set(STOA_MAIN_TRACK_DIR ${STOA_SOLUTIONS_DIR})
   set(STOA_MAIN_TRACK_NAME solutions)
 else()
@@ -34,6 +47,7 @@ else()
 endif()
 set_property(GLOBAL PROPERTY STOA_LABS "")
 set_property(GLOBAL PROPERTY STOA_MISTAKES "")
+set_property(GLOBAL PROPERTY STOA_EQUIVALENTS "")
 
 # Object library with the student C++ of `lab` for one track; returns its name in `out`.
 function(_stoa_student_objects out lab track_suffix source_dir)
@@ -85,6 +99,9 @@ function(stoa_add_lab)
     if(EXISTS ${STOA_SOLUTIONS_DIR} AND NOT EXISTS ${STOA_SOLUTIONS_DIR}/${lab}/${file})
       message(FATAL_ERROR "stoa_add_lab(${lab}): labs/${lab}/${file} has no twin in solutions/${lab}/")
     endif()
+    if(STOA_TRACK_DIR)
+      _stoa_stage_student_file(${lab} ${file})
+    endif()
     if(file MATCHES "\\.cpp$")
       list(APPEND cpp ${lab}/${file})
     endif()
@@ -107,7 +124,7 @@ function(stoa_add_lab)
     list(APPEND objects ${object})
   endforeach()
   _stoa_lab_program(${lab} ${lab} ${CMAKE_BINARY_DIR}/bin ${STOA_MAIN_TRACK_NAME}
-                    "${STOA_MAIN_TRACK_DIR};${CMAKE_SOURCE_DIR}/shaders" "${objects}")
+                    "${STOA_MAIN_TRACK_DIR};${STOA_ROOT_DIR}/shaders" "${objects}")
 
   if(NOT STOA_BUILD_EXTRA_TRACKS)
     return()
@@ -120,7 +137,7 @@ function(stoa_add_lab)
     list(APPEND objects ${object})
   endforeach()
   _stoa_lab_program(${lab} ${lab}-stubs ${CMAKE_BINARY_DIR}/bin/stubs labs
-                    "${STOA_LABS_DIR};${CMAKE_SOURCE_DIR}/shaders" "${objects}")
+                    "${STOA_LABS_DIR};${STOA_ROOT_DIR}/shaders" "${objects}")
 
   # One program per planted mistake.
   file(GLOB mistakes ${STOA_SOLUTIONS_DIR}/${lab}/mistakes/*.mistake)
@@ -150,9 +167,60 @@ function(stoa_add_lab)
       list(APPEND objects stoa_student_${id})
     endif()
     _stoa_lab_program(${lab} ${lab}-mistake-${mistake} ${CMAKE_BINARY_DIR}/bin/mistakes/${id} mistake:${mistake}
-                      "${overlay};${STOA_SOLUTIONS_DIR};${CMAKE_SOURCE_DIR}/shaders" "${objects}")
+                      "${overlay};${STOA_SOLUTIONS_DIR};${STOA_ROOT_DIR}/shaders" "${objects}")
     set_property(GLOBAL APPEND PROPERTY STOA_MISTAKES ${id})
   endforeach()
+
+  # One program per equivalent rewrite (solutions/NN/equivalents/*.equivalent): the
+  # solution written another valid way, which must pass (calibration of the compare).
+  file(GLOB equivalents ${STOA_SOLUTIONS_DIR}/${lab}/equivalents/*.equivalent)
+  foreach(equivalent_file IN LISTS equivalents)
+    _stoa_equivalent_program(${lab} ${equivalent_file} "${ARG_USES}")
+  endforeach()
+endfunction()
+
+# A .equivalent file has the format of a .mistake file, with `why:` (what the
+# rewrite changes and why it is still right) instead of `hint:`, and no `fails:`.
+# Builds build/bin/equivalents/NN_name.NAME/labNN_name.
+function(_stoa_equivalent_program lab equivalent_file uses)
+  get_filename_component(name ${equivalent_file} NAME_WE)
+  set(id ${lab}.${name})
+  set(overlay ${CMAKE_BINARY_DIR}/equivalents/${id})
+  _stoa_apply_mistake(${equivalent_file} ${lab} ${overlay} patched_file)
+  set(objects "")
+  foreach(used IN LISTS uses)
+    _stoa_student_objects(object ${used} "" ${STOA_SOLUTIONS_DIR})
+    list(APPEND objects ${object})
+  endforeach()
+  get_property(lab_cpp GLOBAL PROPERTY STOA_LAB_${lab}_CPP)
+  set(sources "")
+  foreach(file IN LISTS lab_cpp)
+    if(EXISTS ${overlay}/${file})
+      list(APPEND sources ${overlay}/${file})
+    else()
+      list(APPEND sources ${STOA_SOLUTIONS_DIR}/${file})
+    endif()
+  endforeach()
+  if(sources)
+    add_library(stoa_student_equivalent_${id} OBJECT ${sources})
+    target_link_libraries(stoa_student_equivalent_${id} PUBLIC stoa)
+    list(APPEND objects stoa_student_equivalent_${id})
+  endif()
+  _stoa_lab_program(${lab} ${lab}-equivalent-${name} ${CMAKE_BINARY_DIR}/bin/equivalents/${id} equivalent:${name}
+                    "${overlay};${STOA_SOLUTIONS_DIR};${STOA_ROOT_DIR}/shaders" "${objects}")
+  set_property(GLOBAL APPEND PROPERTY STOA_EQUIVALENTS ${id})
+endfunction()
+
+# Copies one student file of a submission (STOA_TRACK_DIR) into the staged track.
+# A file the submission lacks is taken from labs/ (the stub): that lab grades
+# "not attempted" instead of failing to configure.
+function(_stoa_stage_student_file lab file)
+  set(from ${STOA_TRACK_DIR}/${lab}/${file})
+  if(NOT EXISTS ${from})
+    message(WARNING "the submission has no ${lab}/${file}; using the stub from labs/")
+    set(from ${STOA_LABS_DIR}/${lab}/${file})
+  endif()
+  configure_file(${from} ${STOA_MAIN_TRACK_DIR}/${lab}/${file} COPYONLY)
 endfunction()
 
 # A .mistake file:

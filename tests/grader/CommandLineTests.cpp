@@ -92,6 +92,17 @@ TEST_CASE("parseCommandLine: bad usage names the argument and the choices", "[gr
     CHECK(usageError({"--check-mistakes", "--case", "a"}).find("drop --case") != std::string::npos);
 }
 
+TEST_CASE("the options html and junit name report files, for grading only", "[grader][cli][report]") {
+    Options options = parseCommandLine({"--html", "out/report.html", "--junit=out/junit.xml"});
+    CHECK(options.htmlFile == "out/report.html");
+    CHECK(options.junitFile == "out/junit.xml");
+    CHECK(parseCommandLine({}).htmlFile.empty());
+    CHECK(parseCommandLine({}).junitFile.empty());
+    CHECK(usageError({"--html"}).find("--html needs") == 0);
+    CHECK(usageError({"--update-references", "--html", "r.html"}).find("--html only applies") == 0);
+    CHECK(usageError({"--check-mistakes", "--junit", "j.xml"}).find("--junit only applies") == 0);
+}
+
 TEST_CASE("UsageError is an InputError without a file", "[grader][cli]") {
     UsageError error("bad");
     const stoa::InputError& input = error;

@@ -258,8 +258,10 @@ TEST_CASE("results.json follows Gradescope's format", "[grader][json]") {
 
     const Json& tests = document["tests"];
     REQUIRE(tests.items.size() == 4);
-    const std::set<std::string> documented = {"score", "max_score", "status", "name", "number", "output", "tags",
-                                              "visibility"};
+    // The per-test keys of https://gradescope-autograders.readthedocs.io/en/latest/specs/ (there is no
+    // per-test execution_time: the render time goes in extra_data).
+    const std::set<std::string> documented = {"score", "max_score", "status", "name", "name_format", "number",
+                                              "output", "output_format", "tags", "visibility", "extra_data"};
     for (const Json& test : tests.items)
         for (const auto& member : test.members) CHECK(documented.count(member.first) == 1);
 
@@ -276,6 +278,23 @@ TEST_CASE("results.json follows Gradescope's format", "[grader][json]") {
     CHECK(tests.items[3]["status"].text == "failed");
     CHECK(tests.items[3]["tags"].items[0].text == "02_shading");
     CHECK(tests.items[3]["output"].text.find("\tstoa: not implemented: shade()") != std::string::npos);
+    CHECK_FALSE(tests.items[1]["extra_data"].has("hint_mistake"));
+}
+
+TEST_CASE("results.json carries a known-mistake hint in the case's output", "[grader][json][hint]") {
+    std::vector<GradeResult> results = {result("02_shading", "sun", GradeStatus::Failed, 0, 5)};
+    results[0].reason = "3.2% pixels off (max 200, mean 4.1)";
+    results[0].hint = "Use the half vector.";
+    results[0].hintDocs = "docs/labs/02_shading.md#the-half-vector";
+    results[0].hintMistake = "no_half_vector";
+    results[0].seconds = 0.5;
+    Json document = parse(resultsJson(results, summarize(results), 1.0, ""));
+    const Json& test = document["tests"].items.at(0);
+    CHECK(test["output"].text.find("known mistake 'no_half_vector': Use the half vector.") != std::string::npos);
+    CHECK(test["output"].text.find("Read docs/labs/02_shading.md#the-half-vector") != std::string::npos);
+    CHECK(test["extra_data"]["hint_mistake"].text == "no_half_vector");
+    CHECK(test["extra_data"]["hint_docs"].text == "docs/labs/02_shading.md#the-half-vector");
+    CHECK(test["extra_data"]["render_seconds"].number == 0.5);
 }
 
 TEST_CASE("writeResultsJson writes the file and reports a folder it cannot write", "[grader][json]") {

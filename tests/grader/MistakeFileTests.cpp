@@ -105,20 +105,28 @@ TEST_CASE("loadMistakes reads a lab's mistakes in name order", "[grader][mistake
     CHECK_THROWS_AS(loadMistakeFile(folder.path() / "missing.mistake"), stoa::InputError);
 }
 
+// A failed result whose known-mistake hint names `mistakeName`.
+static GradeResult hinted(const std::string& name, const std::string& mistakeName) {
+    GradeResult r = result(name, GradeStatus::Failed);
+    r.hint = "the hint of " + mistakeName;
+    r.hintMistake = mistakeName;
+    return r;
+}
+
 TEST_CASE("judgeMistake: caught only when every listed case failed", "[grader][mistake]") {
     MistakeFile mistake = parseMistakeHeader(kMistake, "view_transposed.mistake");
 
-    MistakeVerdict caught = judgeMistake(mistake, {result("orbit_front", GradeStatus::Failed),
+    MistakeVerdict caught = judgeMistake(mistake, {hinted("orbit_front", "view_transposed"),
                                                    result("orbit_side", GradeStatus::Failed),
                                                    result("fly", GradeStatus::Passed)});
     CHECK(caught.caught);
-    CHECK(caught.detail == "caught");
+    CHECK(caught.detail == "caught, hint ok");
 
     MistakeVerdict extra = judgeMistake(mistake, {result("orbit_front", GradeStatus::Failed),
-                                                  result("orbit_side", GradeStatus::Failed),
+                                                  hinted("orbit_side", "view_transposed"),
                                                   result("fly", GradeStatus::Failed)});
     CHECK(extra.caught);
-    CHECK(extra.detail == "caught (also fails fly)");
+    CHECK(extra.detail == "caught, hint ok (also fails fly)");
 
     MistakeVerdict passed = judgeMistake(mistake, {result("orbit_front", GradeStatus::Failed),
                                                    result("orbit_side", GradeStatus::Passed)});
@@ -133,4 +141,26 @@ TEST_CASE("judgeMistake: caught only when every listed case failed", "[grader][m
     MistakeVerdict missing = judgeMistake(mistake, {result("orbit_front", GradeStatus::Failed)});
     CHECK_FALSE(missing.caught);
     CHECK(missing.detail.find("orbit_side was not graded") != std::string::npos);
+}
+
+TEST_CASE("judgeMistake: caught also needs a hint that names the mistake", "[grader][mistake][hint]") {
+    MistakeFile mistake = parseMistakeHeader(kMistake, "view_transposed.mistake");
+
+    MistakeVerdict noHint = judgeMistake(mistake, {result("orbit_front", GradeStatus::Failed),
+                                                   result("orbit_side", GradeStatus::Failed)});
+    CHECK_FALSE(noHint.caught);
+    CHECK(noHint.detail.find("no failed case's hint names this mistake (orbit_front: no hint; orbit_side: no hint)") !=
+          std::string::npos);
+    CHECK(noHint.detail.find("--update-references") != std::string::npos);
+
+    MistakeVerdict other = judgeMistake(mistake, {hinted("orbit_front", "aspect_inverted"),
+                                                  hinted("orbit_side", "aspect_inverted")});
+    CHECK_FALSE(other.caught);
+    CHECK(other.detail.find("orbit_front: hint names aspect_inverted") != std::string::npos);
+
+    // A hint on a case the mistake does not list does not count.
+    MistakeVerdict elsewhere = judgeMistake(mistake, {result("orbit_front", GradeStatus::Failed),
+                                                      result("orbit_side", GradeStatus::Failed),
+                                                      hinted("fly", "view_transposed")});
+    CHECK_FALSE(elsewhere.caught);
 }

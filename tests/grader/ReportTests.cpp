@@ -88,6 +88,25 @@ TEST_CASE("printReport shows the table, details, totals and the score", "[grader
     CHECK(text.substr(text.size() - 17) == "score: 10 / 32.5\n");
 }
 
+TEST_CASE("printReport puts a known-mistake hint under the failed case's row", "[grader][report][hint]") {
+    std::vector<GradeResult> results = sample();
+    results[1].hint = "The view matrix is transposed.";
+    results[1].hintDocs = "docs/labs/01_transforms.md#the-view-matrix";
+    results[1].hintMistake = "view_transposed";
+    std::ostringstream out;
+    printReport(out, results, summarize(results));
+    std::string text = out.str();
+    std::string line = "               hint: looks like the known mistake 'view_transposed': The view matrix is "
+                       "transposed. (read docs/labs/01_transforms.md#the-view-matrix)\n";
+    std::size_t row = text.find("orbit_side");
+    REQUIRE(row != std::string::npos);
+    CHECK(text.find(line) == text.find('\n', row) + 1);   // the line right after the row
+    CHECK(hintLine(results[0]).empty());
+    results[1].hintDocs.clear();
+    CHECK(hintLine(results[1], 2) == "  hint: looks like the known mistake 'view_transposed': The view matrix is "
+                                     "transposed.");
+}
+
 TEST_CASE("hints point at the docs of labs where nothing was attempted", "[grader][report]") {
     std::vector<std::string> lines = hints(summarize(sample()));
     REQUIRE(lines.size() == 1);

@@ -5,10 +5,12 @@
 
 #include "catch.hpp"
 
+#include <stoa/image/Flip.hpp>
 #include <stoa/image/ImageCompare.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <string>
@@ -78,7 +80,7 @@ TEST_CASE("compareImages: identical images pass with no error", "[image][compare
     CHECK(result.badFraction == 0.0);
     CHECK(result.maxError == 0);
     CHECK(result.meanError == 0.0);
-    CHECK(result.summary == "0.00% of pixels beyond tolerance 12 (max 0, mean 0.00)");
+    CHECK(result.summary == "0.00% of pixels beyond tolerance 12 (max 0, mean 0.00), FLIP mean 0.0000");
 }
 
 TEST_CASE("compareImages: edges shifted by one pixel pass", "[image][compare]") {
@@ -178,9 +180,11 @@ TEST_CASE("compareImages: the summary states the numbers", "[image][compare]") {
     Image actual = reference;
     actual.setPixel(25, 25, {255, 255, 255, 255});  // one pixel of 2500
     const CompareResult one = compareImages(actual, reference);
-    CHECK(one.summary == "0.04% of pixels beyond tolerance 12 (max 255, mean 0.10)");
+    char flip[32];
+    std::snprintf(flip, sizeof flip, "%.4f", stoa::computeFlip(actual, reference).mean);
+    CHECK(one.summary == std::string("0.04% of pixels beyond tolerance 12 (max 255, mean 0.10), FLIP mean ") + flip);
     CHECK(one.badFraction == Approx(1.0 / 2500));
-    CHECK(one.passed == (1.0 / 2500 <= CompareOptions().maxBadFraction));
+    CHECK(one.passed == (1.0 / 2500 <= CompareOptions().maxBadFraction && one.flipMean <= CompareOptions().maxFlipMean));
 
     // A single bad pixel in a large image does not read as 0.00%.
     const Image large(512, 512, 4);
@@ -222,45 +226,96 @@ TEST_CASE("compareImages: the fast search agrees with the definition", "[image][
                     CHECK(result.badFraction == Approx(double(bad) / expected.size()));
 
                     const Image heat = differenceHeatMap(actual, reference, options);
-                    bool heatAgrees = true;
-                    for (int i = 0; i < width * height; ++i) {
-                        const glm::u8vec4 colour = heat.pixel(i % width, i / width);
-                        const int d = expected[i];
-                        heatAgrees = heatAgrees && (d == 0 ? colour == glm::u8vec4(0, 0, 0, 255)
-                                                           : (d > tolerance) == (colour.r == 255));
+                    if (expectedMax <= tolerance) {
+                        // The fast path: the shift-tolerant picture, no FLIP.
+                        CHECK(result.flipMean == 0.0);
+                        CHECK(result.flipErrorMap.empty());
+                        bool heatAgrees = true;
+                        for (int i = 0; i < width * height; ++i) {
+                            const glm::u8vec4 colour = heat.pixel(i % width, i / width);
+                            heatAgrees = heatAgrees && (expected[i] == 0) == (colour == glm::u8vec4(0, 0, 0, 255)) &&
+                                         colour.r <= 128;
+                        }
+                        CHECK(heatAgrees);
+                    } else {
+                        // FLIP ran: its mean, and its heat map, also from the computed result.
+                        const stoa::FlipResult flip = stoa::computeFlip(actual, reference);
+                        CHECK(result.flipMean == flip.mean);
+                        CHECK(result.flipErrorMap == flip.errorMap);
+                        const Image flipHeat = flip.heatMap();
+                        CHECK(std::equal(heat.data(), heat.data() + heat.sizeInBytes(), flipHeat.data()));
+                        const Image reused = differenceHeatMap(actual, reference, result, options);
+                        CHECK(std::equal(reused.data(), reused.data() + reused.sizeInBytes(), flipHeat.data()));
                     }
-                    CHECK(heatAgrees);
                 }
             }
         }
     }
 }
 
-TEST_CASE("differenceHeatMap: black where equal, red to yellow where bad", "[image][compare]") {
+TEST_CASE("differenceHeatMap: FLIP's heat map where the images differ beyond the tolerance", "[image][compare]") {
     const Image reference = edges(64, 32, 10);
     Image actual = reference;
-    fill(actual, 40, 40, 50, 50, {255, 255, 255, 0});  // white on white, but alpha 0: difference 255
-    actual.setPixel(5, 5, {20, 0, 0, 255});              // 20 levels off in one channel: bad, not by much
+    fill(actual, 40, 40, 50, 50, {0, 0, 255, 255});  // a blue square on white
 
     const Image heat = differenceHeatMap(actual, reference);
     REQUIRE(heat.width() == 64);
     REQUIRE(heat.height() == 64);
-    CHECK(heat.pixel(0, 0) == glm::u8vec4(0, 0, 0, 255));
-    CHECK(heat.pixel(63, 63) == glm::u8vec4(0, 0, 0, 255));
-    CHECK(heat.pixel(45, 45) == glm::u8vec4(255, 255, 0, 255));  // difference 255: yellow
-    const glm::u8vec4 slightlyBad = heat.pixel(5, 5);
-    CHECK(int(slightlyBad.r) == 255);
-    CHECK(int(slightlyBad.g) < 40);
-    CHECK(int(slightlyBad.b) == 0);
+    const Image flip = stoa::computeFlip(actual, reference).heatMap();
+    CHECK(std::equal(heat.data(), heat.data() + heat.sizeInBytes(), flip.data()));
+    const glm::u8vec4 inside = heat.pixel(45, 45), far = heat.pixel(5, 60);
+    CHECK(int(inside.r) + inside.g + inside.b > 3 * (int(far.r) + far.g + far.b));
+    CHECK(int(far.r) + far.g + far.b < 20);  // FLIP's zero: near black
+}
 
-    // Within the tolerance: visible, but darker than any bad pixel.
+TEST_CASE("differenceHeatMap: within the tolerance, black where equal and dark red where not", "[image][compare]") {
+    const Image reference = edges(64, 32, 10);
     Image rounded = reference;
     rounded.setPixel(5, 5, {6, 0, 0, 255});
-    const glm::u8vec4 withinTolerance = differenceHeatMap(rounded, reference).pixel(5, 5);
+    const Image heat = differenceHeatMap(rounded, reference);
+    const glm::u8vec4 withinTolerance = heat.pixel(5, 5);
     CHECK(int(withinTolerance.r) > 0);
     CHECK(int(withinTolerance.r) <= 128);
     CHECK(int(withinTolerance.g) == 0);
+    CHECK(heat.pixel(0, 0) == glm::u8vec4(0, 0, 0, 255));
 
     const Image same = differenceHeatMap(reference, reference);
     CHECK(same.pixel(32, 32) == glm::u8vec4(0, 0, 0, 255));
+}
+
+TEST_CASE("compareImages: FLIP runs only beyond the floor and its mean gates the result", "[image][compare]") {
+    const Image reference = shaded(64, 64);
+    SECTION("identical: FLIP skipped, mean 0") {
+        const CompareResult result = compareImages(reference, reference);
+        CHECK(result.flipMean == 0.0);
+        CHECK(result.passed);
+        CHECK(result.summary.find("FLIP mean 0.0000") != std::string::npos);
+    }
+    SECTION("rounding within the tolerance: FLIP skipped") {
+        Image rounded = reference;
+        for (std::size_t i = 0; i < rounded.sizeInBytes(); i += 4) rounded.data()[i] += 2;
+        const CompareResult result = compareImages(rounded, reference);
+        CHECK(result.maxError == 2);
+        CHECK(result.flipMean == 0.0);
+        CHECK(result.flipErrorMap.empty());
+        CHECK(result.passed);
+    }
+    SECTION("a shade changed everywhere: a gate loosened to let it through, FLIP does not") {
+        Image tinted = reference;
+        for (std::size_t i = 0; i < tinted.sizeInBytes(); i += 4) tinted.data()[i] += 20;
+        CompareOptions options;
+        options.maxBadFraction = 1.0;
+        CompareResult result = compareImages(tinted, reference, options);
+        CHECK(result.badFraction == 1.0);
+        CHECK(result.flipMean > options.maxFlipMean);
+        CHECK_FALSE(result.passed);
+        options.maxFlipMean = 1.0;
+        result = compareImages(tinted, reference, options);
+        CHECK(result.passed);
+    }
+    SECTION("different sizes: no FLIP") {
+        const CompareResult result = compareImages(Image(8, 8, 4), Image(9, 8, 4));
+        CHECK(result.flipMean == -1.0);
+        CHECK_FALSE(result.passed);
+    }
 }

@@ -165,6 +165,7 @@ TEST_CASE("parseManifest: every mistake names the file and the line", "[lab][man
         {kHead + "max_bad_fraction = 1.5\n", 4, "expected a max_bad_fraction from 0 to 1, got '1.5'"},
         {kHead + "max_bad_fraction = -0.1\n", 4, "got '-0.1'"},
         {kHead + "max_bad_fraction = 1%\n", 4, "got '1%'"},
+        {kHead + "max_flip_mean = 2\n", 4, "expected a max_flip_mean from 0 to 1 (a mean LDR-FLIP error), got '2'"},
         {"title = No lab\n[case a]\n", 0, "missing 'lab = NAME'"},
         {"lab = 01\n# no cases\n", 0, "no [case ...] sections"},
         {"", 0, "missing 'lab = NAME'"},
@@ -183,8 +184,9 @@ TEST_CASE("parseManifest: every mistake names the file and the line", "[lab][man
 
 TEST_CASE("parseManifest: boundary values that are allowed", "[lab][manifest]") {
     const LabManifest manifest = parseManifest(kHead + "resolution = 4096 1\npoints = 0\ntolerance = 0\n"
-                                                       "max_bad_fraction = 1\n[case b]\ntolerance = 255\n"
-                                                       "max_bad_fraction = 0\nlab = a scene parameter here\n",
+                                                       "max_bad_fraction = 1\nmax_flip_mean = 1\n[case b]\n"
+                                                       "tolerance = 255\nmax_bad_fraction = 0\nmax_flip_mean = 0\n"
+                                                       "lab = a scene parameter here\n",
                                                "cases.ini");
     const CaseSpec& a = manifest.cases.at(0);
     CHECK(a.width == 4096);
@@ -192,9 +194,11 @@ TEST_CASE("parseManifest: boundary values that are allowed", "[lab][manifest]") 
     CHECK(a.points == 0.0);
     CHECK(a.compare.tolerance == 0);
     CHECK(a.compare.maxBadFraction == 1.0);
+    CHECK(a.compare.maxFlipMean == 1.0);
     const CaseSpec& b = manifest.cases.at(1);
     CHECK(b.compare.tolerance == 255);
     CHECK(b.compare.maxBadFraction == 0.0);
+    CHECK(b.compare.maxFlipMean == 0.0);
     CHECK(b.getString("lab") == "a scene parameter here");
 }
 

@@ -1,6 +1,7 @@
 #include <stoa/image/ImageCompare.hpp>
 
 #include <stoa/core/Assert.hpp>
+#include <stoa/image/Flip.hpp>
 
 #include <algorithm>
 #include <cstdint>
@@ -149,6 +150,28 @@ void checkOptions(const CompareOptions& options) {
                 "compareImages(), differenceHeatMap(): CompareOptions::tolerance must be 0..255 levels.");
     STOA_ASSERT(options.maxBadFraction >= 0.0 && options.maxBadFraction <= 1.0,
                 "compareImages(), differenceHeatMap(): CompareOptions::maxBadFraction must be in [0, 1].");
+    STOA_ASSERT(options.maxFlipMean >= 0.0 && options.maxFlipMean <= 1.0,
+                "compareImages(), differenceHeatMap(): CompareOptions::maxFlipMean must be in [0, 1].");
+}
+
+// The shift-tolerant difference as a heat map (the fast path's picture).
+Image shiftHeatMap(const std::vector<std::uint8_t>& difference, int width, int height, int tolerance) {
+    Image heat(width, height, 4);
+    std::uint8_t* out = heat.data();
+    for (std::size_t i = 0; i < difference.size(); ++i, out += 4) {
+        const int d = difference[i];
+        if (d <= tolerance) {
+            // Within the tolerance: a dark red that reaches half brightness at the tolerance,
+            // so accepted rounding shows without drawing the eye.
+            out[0] = static_cast<std::uint8_t>(tolerance == 0 ? 0 : (128 * d) / tolerance);
+        } else {
+            // Bad: full red, turning yellow as the difference grows to 255.
+            out[0] = 255;
+            out[1] = static_cast<std::uint8_t>(255 * (d - tolerance) / (255 - tolerance));
+        }
+        out[3] = 255;
+    }
+    return heat;
 }
 
 std::string formatPercent(double fraction) {
@@ -179,6 +202,7 @@ CompareResult compareImages(const Image& actual, const Image& reference, const C
         result.badFraction = 0.0;
         result.meanError = 0.0;
         result.maxError = 0;
+        result.flipMean = 0.0;
     } else {
         const std::vector<std::uint8_t> difference = differenceMap(actual, reference, options.searchRadius);
         std::size_t bad = 0;
@@ -193,14 +217,40 @@ CompareResult compareImages(const Image& actual, const Image& reference, const C
         result.badFraction = bad / count;
         result.meanError = sum / count;
         result.maxError = largest;
+        if (largest <= options.tolerance) {
+            // Nothing beyond the floor anywhere: rounding only, FLIP would see nothing.
+            result.flipMean = 0.0;
+        } else {
+            FlipResult flip = computeFlip(actual, reference);
+            result.flipMean = flip.mean;
+            result.flipErrorMap = std::move(flip.errorMap);
+        }
     }
-    result.passed = result.badFraction <= options.maxBadFraction;
+    result.passed = result.badFraction <= options.maxBadFraction && result.flipMean <= options.maxFlipMean;
 
-    char tail[96];
-    std::snprintf(tail, sizeof tail, " of pixels beyond tolerance %d (max %d, mean %.2f)", options.tolerance,
-                  result.maxError, result.meanError);
+    char tail[128];
+    std::snprintf(tail, sizeof tail, " of pixels beyond tolerance %d (max %d, mean %.2f), FLIP mean %.4f",
+                  options.tolerance, result.maxError, result.meanError, result.flipMean);
     result.summary = formatPercent(result.badFraction) + tail;
     return result;
+}
+
+Image differenceHeatMap(const Image& actual, const Image& reference, const CompareResult& computed,
+                        const CompareOptions& options) {
+    checkOptions(options);
+    STOA_ASSERT(actual.width() == reference.width() && actual.height() == reference.height(),
+                "differenceHeatMap(): the images differ in size; check CompareResult::sameSize first.");
+    if (!computed.flipErrorMap.empty()) {
+        STOA_ASSERT(computed.flipErrorMap.size() == static_cast<std::size_t>(actual.width()) * actual.height(),
+                    "differenceHeatMap(): the CompareResult belongs to images of another size.");
+        FlipResult flip;
+        flip.width = actual.width();
+        flip.height = actual.height();
+        flip.errorMap = computed.flipErrorMap;
+        return flip.heatMap();
+    }
+    const std::vector<std::uint8_t> difference = differenceMap(actual, reference, options.searchRadius);
+    return shiftHeatMap(difference, actual.width(), actual.height(), options.tolerance);
 }
 
 Image differenceHeatMap(const Image& actual, const Image& reference, const CompareOptions& options) {
@@ -208,23 +258,10 @@ Image differenceHeatMap(const Image& actual, const Image& reference, const Compa
     STOA_ASSERT(actual.width() == reference.width() && actual.height() == reference.height(),
                 "differenceHeatMap(): the images differ in size; check CompareResult::sameSize first.");
     const std::vector<std::uint8_t> difference = differenceMap(actual, reference, options.searchRadius);
-    Image heat(actual.width(), actual.height(), 4);
-    std::uint8_t* out = heat.data();
-    const int tolerance = options.tolerance;
-    for (std::size_t i = 0; i < difference.size(); ++i, out += 4) {
-        const int d = difference[i];
-        if (d <= tolerance) {
-            // Within the tolerance: a dark red that reaches half brightness at the tolerance,
-            // so accepted rounding shows without drawing the eye.
-            out[0] = static_cast<std::uint8_t>(tolerance == 0 ? 0 : (128 * d) / tolerance);
-        } else {
-            // Bad: full red, turning yellow as the difference grows to 255.
-            out[0] = 255;
-            out[1] = static_cast<std::uint8_t>(255 * (d - tolerance) / (255 - tolerance));
-        }
-        // out[2] stays 0 and out[3] is already 255.
-    }
-    return heat;
+    std::uint8_t largest = 0;
+    for (const std::uint8_t d : difference) largest = larger(largest, d);
+    if (largest > options.tolerance) return computeFlip(actual, reference).heatMap();
+    return shiftHeatMap(difference, actual.width(), actual.height(), options.tolerance);
 }
 
 } // namespace stoa

@@ -201,6 +201,11 @@ private:
             if (!parseNumber(value, fraction) || fraction < 0.0 || fraction > 1.0)
                 fail("expected a max_bad_fraction from 0 to 1, got '" + value + "'");
             spec.compare.maxBadFraction = fraction;
+        } else if (key == "max_flip_mean") {
+            double mean = 0.0;
+            if (!parseNumber(value, mean) || mean < 0.0 || mean > 1.0)
+                fail("expected a max_flip_mean from 0 to 1 (a mean LDR-FLIP error), got '" + value + "'");
+            spec.compare.maxFlipMean = mean;
         } else {
             spec.setParameter(key, value, m_line);
         }

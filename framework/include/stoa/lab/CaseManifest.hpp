@@ -13,6 +13,7 @@
 //   visibility = visible            # visible | hidden
 //   tolerance = 12                  # optional, see CompareOptions
 //   max_bad_fraction = 0.002        # optional
+//   max_flip_mean = 0.05            # optional
 //   camera = orbit                  # any other key is a scene parameter the lab reads
 //   target = 0 0.5 0
 //
@@ -43,7 +44,7 @@ public:
     int height = 512;
     double points = 1.0;
     Visibility visibility = Visibility::Visible;
-    CompareOptions compare;          // defaults unless the case sets tolerance / max_bad_fraction
+    CompareOptions compare;          // defaults unless the case sets tolerance / max_bad_fraction / max_flip_mean
     std::string file;                // the manifest it came from
     int line = 0;                    // the line of its [case ...] header
 

@@ -14,6 +14,9 @@
 //   --info                     print the lab and the track it was built from
 //   --render NAME --output FILE [--backend osmesa|egl]
 //                              render a case headless into a PNG
+//   --cases FILE.ini           with any of the above: the cases come from FILE.ini
+//                              instead of the lab's cases.ini (the grader passes a
+//                              lab's hidden_cases.ini this way)
 // Exit status: 0 done; 1 error; 2 bad command line; 3 not attempted (a stub is still in place).
 
 #include <stoa/lab/Lab.hpp>

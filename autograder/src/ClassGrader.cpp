@@ -1,0 +1,397 @@
+#include "ClassGrader.hpp"
+
+#include "BatchGradeJson.hpp"
+#include "ChildProcess.hpp"
+#include "CommandLine.hpp"
+#include "Grader.hpp"
+#include "JsonWriter.hpp"
+#include "LabCatalog.hpp"
+#include "Report.hpp"
+
+#include <stoa/core/InputError.hpp>
+#include <stoa/lab/CaseManifest.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+
+namespace stoa::grader {
+
+namespace {
+
+constexpr std::size_t kNoteLength = 200;       // one note in the gradebook
+constexpr std::size_t kMessageLength = 2000;   // the compiler's message in results.json
+
+// Builds run the student's code through the compiler only; a wall clock is enough.
+ProcessLimits buildLimits(std::size_t outputBytes) {
+    ProcessLimits limits;
+    limits.timeoutSeconds = 900.0;
+    limits.cpuSeconds = 0;
+    limits.addressSpaceBytes = 0;
+    limits.fileSizeBytes = 0;
+    limits.outputLimitBytes = outputBytes;
+    limits.maxProcesses = 0;   // make and the compiler start many; stoa-grade limits the lab programs itself
+    limits.maxTasks = 0;
+    limits.isolateNetwork = false;
+    return limits;
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+}
+
+std::string truncated(std::string text, std::size_t length) {
+    if (text.size() <= length) return text;
+    text.resize(length);
+    return text + "...";
+}
+
+std::string oneLine(std::string text) {
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    std::replace(text.begin(), text.end(), '\r', ' ');
+    return text;
+}
+
+// The compiler's errors from a build log: the lines that say "error", with the
+// line after each (the source line it quotes); the whole tail when none does.
+std::string compilerMessage(const std::string& output) {
+    std::istringstream lines(output);
+    std::string line;
+    std::string message;
+    int take = 0;
+    while (std::getline(lines, line)) {
+        bool isError = line.find("error") != std::string::npos && line.find("make") != 0 &&
+                       line.find("gmake") != 0;
+        if (isError) take = 2;
+        if (take > 0) {
+            message += line + "\n";
+            --take;
+        }
+    }
+    if (message.empty()) message = output.size() > kMessageLength ? output.substr(output.size() - kMessageLength) : output;
+    return truncated(message, kMessageLength);
+}
+
+// `text` with every occurrence of `prefix` removed (the staging folder in compiler messages).
+std::string withoutPrefix(std::string text, const std::string& prefix) {
+    for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at))
+        text.erase(at, prefix.size());
+    return text;
+}
+
+// The first error line, for the gradebook: "transforms.cpp:12:5: error: ..." with the path shortened.
+std::string firstError(const std::string& message) {
+    std::istringstream lines(message);
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (line.find("error") == std::string::npos) continue;
+        std::size_t track = line.find("/track/");
+        if (track != std::string::npos) line = line.substr(track + 7);
+        return truncated(oneLine(line), kNoteLength);
+    }
+    return truncated(oneLine(message), kNoteLength);
+}
+
+double manifestPoints(const std::filesystem::path& manifest) {
+    double points = 0.0;
+    for (const CaseSpec& spec : loadManifest(manifest).cases) points += spec.points;
+    return points;
+}
+
+std::string labOfTest(const JsonValue& test) {
+    if (const JsonValue* tags = test.find("tags"))
+        for (const JsonValue& tag : tags->items())
+            if (tag.asString().size() > 3 && std::isdigit(static_cast<unsigned char>(tag.asString()[0])))
+                return tag.asString();
+    const JsonValue* name = test.find("name");
+    std::string text = name ? name->asString() : "";
+    return text.substr(0, text.find('/'));
+}
+
+// stoa-grade tags each test with its lab and its status ("not attempted", "error", ...);
+// Gradescope's own "status" knows only passed and failed.
+std::string testStatus(const JsonValue& test) {
+    if (const JsonValue* tags = test.find("tags"))
+        for (const JsonValue& tag : tags->items())
+            for (const char* known : {"passed", "failed", "not attempted", "error", "no reference"})
+                if (tag.asString() == known) return known;
+    const JsonValue* status = test.find("status");
+    return status ? status->asString() : "unknown";
+}
+
+std::string describeCounts(const std::map<std::string, int>& counts, int total) {
+    if (counts.count("passed") && counts.at("passed") == total) return "";
+    if (counts.count("not attempted") && counts.at("not attempted") == total) return "not attempted";
+    std::string text;
+    for (const auto& [status, count] : counts)
+        if (status != "passed") text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + status;
+    return text;
+}
+
+// Adds one failed test per lab that did not build to the student's results.json
+// (creating it when nothing was graded), so Gradescope-style consumers see why.
+void addBuildFailures(const std::filesystem::path& resultsJson, const StudentGrade& grade,
+                      const std::map<std::string, std::string>& messages) {
+    JsonValue document = JsonValue::object();
+    std::error_code error;
+    if (std::filesystem::exists(resultsJson, error)) document = readJsonFile(resultsJson);
+    JsonValue tests = JsonValue::array();
+    if (const JsonValue* existing = document.find("tests")) tests = *existing;
+    for (const auto& [lab, message] : messages) {
+        JsonValue test = JsonValue::object();
+        test.set("score", JsonValue::number(0));
+        test.set("max_score", JsonValue::number(grade.labs.at(lab).maxPoints));
+        test.set("status", JsonValue::string("failed"));
+        test.set("name", JsonValue::string(lab + "/build"));
+        test.set("output", JsonValue::string("The lab does not compile:\n" + message));
+        JsonValue tags = JsonValue::array();
+        tags.push(JsonValue::string(lab));
+        test.set("tags", tags);
+        test.set("visibility", JsonValue::string("visible"));
+        tests.push(test);
+    }
+    double score = 0.0;
+    for (const JsonValue& test : tests.items())
+        if (const JsonValue* points = test.find("score")) score += points->asNumber();
+    document.set("score", JsonValue::number(score));
+    if (!document.find("output")) document.set("output", JsonValue::string(""));
+    std::string output = document.find("output")->asString();
+    for (const auto& entry : messages) output += "lab " + entry.first + " does not compile (see its test)\n";
+    document.set("output", JsonValue::string(output));
+    document.set("tests", tests);
+    writeText(resultsJson, document.dump() + "\n");
+}
+
+} // namespace
+
+Framework locateFramework(const std::filesystem::path& sourceDir, const std::filesystem::path& buildDir,
+                          const std::vector<std::string>& requestedLabs, const std::filesystem::path& cmake) {
+    Framework framework;
+    framework.sourceDir = std::filesystem::absolute(sourceDir);
+    framework.buildDir = std::filesystem::absolute(buildDir);
+    framework.gradeProgram = framework.buildDir / "bin" / "stoa-grade";
+    framework.cmake = cmake;
+    std::filesystem::path config = framework.buildDir / "stoa-config" / "StoaConfig.cmake";
+    if (!std::filesystem::is_regular_file(config))
+        throw InputError(config.string(), 0,
+                         "no exported framework here; configure and build the framework first "
+                         "(cmake -S . -B build && cmake --build build), or pass --framework-build");
+    if (!isExecutable(framework.gradeProgram))
+        throw InputError(framework.gradeProgram.string(), 0, "stoa-grade is not built: cmake --build build --target stoa-grade");
+    if (!std::filesystem::is_regular_file(framework.sourceDir / "autograder" / "submission" / "CMakeLists.txt"))
+        throw InputError(framework.sourceDir.string(), 0, "not a Stoa tree (no autograder/submission/CMakeLists.txt)");
+    if (!isExecutable(framework.cmake))
+        throw InputError(framework.cmake.string(), 0, "cmake is not there (it configured the framework)");
+
+    ProcessOutcome help = runProcess({framework.gradeProgram.string(), "--help"}, {}, defaultLimits(30.0));
+    framework.gradeWritesHtml = help.output.find("--html") != std::string::npos;
+
+    for (const LabEntry& entry : selectLabs(findLabs(framework.sourceDir), requestedLabs)) {
+        framework.labs.push_back(entry.lab);
+        double points = manifestPoints(entry.manifestPath);
+        std::filesystem::path hidden = framework.sourceDir / "solutions" / entry.lab / "hidden_cases.ini";
+        if (std::filesystem::is_regular_file(hidden)) points += manifestPoints(hidden);
+        framework.labMaxPoints[entry.lab] = points;
+    }
+    if (framework.labs.empty())
+        throw InputError((framework.sourceDir / "labs").string(), 0, "no labs with a cases.ini to grade");
+    return framework;
+}
+
+void addResults(const std::filesystem::path& resultsJson, StudentGrade& grade) {
+    JsonValue document = readJsonFile(resultsJson);
+    const JsonValue* tests = document.find("tests");
+    if (!tests || !tests->isArray()) throw InputError(resultsJson.string(), 0, "no \"tests\" array");
+    std::map<std::string, std::map<std::string, int>> counts;
+    std::map<std::string, int> totals;
+    std::map<std::string, LabGrade> sums;
+    for (const JsonValue& test : tests->items()) {
+        std::string lab = labOfTest(test);
+        if (grade.labs.find(lab) == grade.labs.end()) continue;
+        LabGrade& sum = sums[lab];
+        if (const JsonValue* score = test.find("score")) sum.points += score->asNumber();
+        if (const JsonValue* max = test.find("max_score")) sum.maxPoints += max->asNumber();
+        ++counts[lab][testStatus(test)];
+        ++totals[lab];
+    }
+    for (const auto& [lab, sum] : sums) {
+        LabGrade& labGrade = grade.labs[lab];
+        labGrade.points = sum.points;
+        labGrade.maxPoints = sum.maxPoints;
+        labGrade.note = describeCounts(counts[lab], totals[lab]);
+    }
+}
+
+StudentGrade gradeSubmission(const Submission& submission, const Framework& framework, const ClassOptions& options,
+                             const std::function<void(const std::string&)>& progress) {
+    StudentGrade grade;
+    grade.student = submission.student;
+    for (const std::string& lab : framework.labs) grade.labs[lab].maxPoints = framework.labMaxPoints.at(lab);
+    auto finish = [&](const std::string& status) {
+        grade.status = status;
+        grade.points = grade.maxPoints = 0.0;
+        for (const std::string& lab : framework.labs) {
+            grade.points += grade.labs[lab].points;
+            grade.maxPoints += grade.labs[lab].maxPoints;
+            if (!grade.labs[lab].note.empty()) grade.notes.push_back(lab + ": " + grade.labs[lab].note);
+        }
+        return grade;
+    };
+
+    std::filesystem::path studentDir = std::filesystem::absolute(options.outDir / submission.student);
+    std::filesystem::path buildDir = studentDir / "build";
+    try {
+        std::filesystem::create_directories(studentDir);
+        std::filesystem::remove(studentDir / "results.json");
+        std::filesystem::remove(studentDir / "report.html");
+
+        progress("unpacking...");
+        std::filesystem::path labsDir;
+        try {
+            labsDir = stageSubmission(submission, studentDir / "submission");
+        } catch (const InputError& error) {
+            grade.notes.push_back(truncated(oneLine(error.what()), kNoteLength));
+            return finish("no labs/ folder");
+        }
+
+        progress("configuring...");
+        ProcessOutcome configure = runProcess(
+            {framework.cmake.string(), "-S", (framework.sourceDir / "autograder" / "submission").string(), "-B",
+             buildDir.string(), "-DStoa_DIR=" + (framework.buildDir / "stoa-config").string(),
+             "-DSTOA_TRACK_DIR=" + labsDir.string()},
+            studentDir, buildLimits(16384));
+        writeText(studentDir / "configure.log", configure.output);
+        if (!configure.exitedWith(0)) {
+            grade.notes.push_back("configure failed (" + configure.describe() + "); see configure.log: " +
+                                  firstError(compilerMessage(configure.output)));
+            return finish("configure failed");
+        }
+
+        std::map<std::string, std::string> buildErrors;
+        std::vector<std::string> built;
+        for (const std::string& lab : framework.labs) {
+            progress("building " + lab + "...");
+            ProcessOutcome build =
+                runProcess({framework.cmake.string(), "--build", buildDir.string(), "--target", lab, "-j", "1"},
+                           studentDir, buildLimits(32768));
+            writeText(studentDir / ("build-" + lab + ".log"), build.output);
+            if (build.exitedWith(0)) {
+                grade.labs[lab].built = true;
+                built.push_back(lab);
+            } else {
+                buildErrors[lab] = withoutPrefix(compilerMessage(build.output), (buildDir / "track").string() + "/");
+                grade.labs[lab].note = "does not compile: " + firstError(buildErrors[lab]);
+            }
+        }
+
+        if (!built.empty()) {
+            progress("grading...");
+            std::vector<std::string> argv = {framework.gradeProgram.string(),
+                                             "--bin-dir", (buildDir / "bin").string(),
+                                             "--json", (studentDir / "results.json").string(),
+                                             "--work-dir", (studentDir / "work").string(),
+                                             "--timeout", std::to_string(options.timeoutSeconds)};
+            for (const std::string& lab : built) {
+                argv.push_back("--lab");
+                argv.push_back(lab);
+            }
+            if (framework.gradeWritesHtml) {
+                argv.push_back("--html");
+                argv.push_back((studentDir / "report.html").string());
+            }
+            ProcessLimits limits = buildLimits(65536);
+            limits.timeoutSeconds = 60.0 + options.timeoutSeconds * 4.0 * 64;
+            ProcessOutcome grading = runProcess(argv, studentDir, limits);
+            writeText(studentDir / "grade.log", grading.output);
+            if (!grading.exitedWith(0) || !std::filesystem::exists(studentDir / "results.json")) {
+                grade.notes.push_back("stoa-grade " + grading.describe() + "; see grade.log: " +
+                                      truncated(oneLine(grading.lastOutputLine()), kNoteLength));
+                return finish("grader error");
+            }
+            addResults(studentDir / "results.json", grade);
+        }
+        if (!buildErrors.empty()) addBuildFailures(studentDir / "results.json", grade, buildErrors);
+        return finish(buildErrors.empty() ? "graded" : built.empty() ? "build failed" : "partly built");
+    } catch (const std::exception& error) {
+        grade.notes.push_back(truncated(oneLine(error.what()), kNoteLength));
+        return finish("grader error");
+    }
+}
+
+namespace {
+
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+} // namespace
+
+std::string gradebookCsv(const std::vector<std::string>& labs, const std::vector<StudentGrade>& grades) {
+    std::ostringstream csv;
+    csv << "student";
+    for (const std::string& lab : labs) csv << "," << csvField(lab);
+    csv << ",total,max,status,notes\n";
+    for (const StudentGrade& grade : grades) {
+        csv << csvField(grade.student);
+        for (const std::string& lab : labs) {
+            auto found = grade.labs.find(lab);
+            csv << "," << formatPoints(found == grade.labs.end() ? 0.0 : found->second.points);
+        }
+        std::string notes;
+        for (const std::string& note : grade.notes) notes += (notes.empty() ? "" : "; ") + note;
+        csv << "," << formatPoints(grade.points) << "," << formatPoints(grade.maxPoints) << ","
+            << csvField(grade.status) << "," << csvField(notes) << "\n";
+    }
+    return csv.str();
+}
+
+int runClassGrade(const ClassOptions& options, const Framework& framework, std::ostream& out, std::ostream& err) {
+    auto start = std::chrono::steady_clock::now();
+    std::vector<std::string> skipped;
+    std::vector<Submission> submissions = findSubmissions(options.submissionsDir, skipped);
+    for (const std::string& line : skipped) err << "note: skipping " << line << "\n";
+    if (submissions.empty()) {
+        err << "stoa-grade-class: no submissions in " << options.submissionsDir.string()
+            << " (expected student folders, .zip or .tar.gz files)\n";
+        return 1;
+    }
+    std::filesystem::create_directories(options.outDir);
+    out << "grading " << submissions.size() << " submissions (" << options.jobs << " at once), labs:";
+    for (const std::string& lab : framework.labs) out << " " << lab;
+    out << "\n" << (framework.gradeWritesHtml ? "" : "note: this stoa-grade has no --html; results.json only\n");
+
+    std::mutex printing;
+    std::size_t total = submissions.size();
+    std::size_t finished = 0;
+    std::vector<StudentGrade> grades(total);
+    forEachInParallel(total, options.jobs, [&](std::size_t i) {
+        const Submission& submission = submissions[i];
+        auto say = [&](const std::string& what) {
+            std::lock_guard<std::mutex> lock(printing);
+            out << "[" << (i + 1) << "/" << total << "] " << submission.student << ": " << what << std::endl;
+        };
+        grades[i] = gradeSubmission(submission, framework, options, say);
+        std::lock_guard<std::mutex> lock(printing);
+        ++finished;
+        out << "[" << (i + 1) << "/" << total << "] " << submission.student << ": " << grades[i].status << " "
+            << formatPoints(grades[i].points) << "/" << formatPoints(grades[i].maxPoints);
+        for (const std::string& note : grades[i].notes) out << "\n      " << note;
+        out << "  (" << finished << " of " << total << " done)" << std::endl;
+    });
+
+    std::filesystem::path gradebook = options.outDir / "gradebook.csv";
+    writeText(gradebook, gradebookCsv(framework.labs, grades));
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out << "wrote " << gradebook.string() << " (" << total << " students, " << static_cast<int>(seconds + 0.5)
+        << " s); per student: " << (options.outDir / "STUDENT").string()
+        << (framework.gradeWritesHtml ? "/{results.json,report.html,*.log}\n" : "/{results.json,*.log}\n");
+    return 0;
+}
+
+} // namespace stoa::grader

@@ -1,0 +1,85 @@
+#pragma once
+// stoa-grade-class: grades a folder of submissions against a prebuilt framework.
+//
+// For each student, on up to `jobs` students at once:
+//   1. stage     unpack the archive (or use the folder) and find its labs/ tree;
+//   2. configure cmake -S autograder/submission -B <out>/<student>/build
+//                      -DStoa_DIR=<framework build>/stoa-config -DSTOA_TRACK_DIR=<its labs/>
+//                (only the student files each lab declares are taken from it);
+//   3. build     one lab at a time, so a compile error fails that lab (and the
+//                labs that use its code) with the compiler's message, not the batch;
+//   4. grade     the framework's stoa-grade on the student's programs: results.json
+//                (and report.html where stoa-grade has --html) in <out>/<student>/.
+// Then <out>/gradebook.csv: one row per student with points per lab, total, max,
+// status and notes.
+
+#include "BatchGradeSubmissions.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace stoa::grader {
+
+struct ClassOptions {
+    std::filesystem::path submissionsDir;
+    std::filesystem::path outDir;
+    int jobs = 1;                          // students built and graded at once
+    std::vector<std::string> labs;         // --lab; empty = every lab
+    double timeoutSeconds = 60.0;          // per case, passed to stoa-grade
+    std::filesystem::path frameworkBuild;  // empty = the build folder stoa-grade-class runs from
+};
+
+/// The prebuilt framework the submissions compile against.
+struct Framework {
+    std::filesystem::path sourceDir;       // the Stoa tree: labs/, autograder/submission/
+    std::filesystem::path buildDir;        // its build: stoa-config/, bin/stoa-grade
+    std::filesystem::path gradeProgram;    // <build>/bin/stoa-grade
+    std::filesystem::path cmake;           // the cmake that configured it
+    bool gradeWritesHtml = false;          // stoa-grade --help mentions --html
+    std::vector<std::string> labs;         // the labs to grade, in order
+    std::map<std::string, double> labMaxPoints;   // from the manifests (public and hidden)
+};
+
+/// Checks that `buildDir` holds a built framework (stoa-config/StoaConfig.cmake,
+/// bin/stoa-grade) and reads the labs of `sourceDir`. Throws InputError saying
+/// what to build when something is missing, UsageError for an unknown --lab.
+Framework locateFramework(const std::filesystem::path& sourceDir, const std::filesystem::path& buildDir,
+                          const std::vector<std::string>& requestedLabs, const std::filesystem::path& cmake);
+
+struct LabGrade {
+    double points = 0.0;
+    double maxPoints = 0.0;
+    bool built = false;
+    std::string note;                      // "not attempted", "2 failed", "does not compile: ..."
+};
+
+struct StudentGrade {
+    std::string student;
+    std::map<std::string, LabGrade> labs;
+    double points = 0.0;
+    double maxPoints = 0.0;
+    std::string status;                    // "graded", "build failed", "no labs/ folder", ...
+    std::vector<std::string> notes;
+};
+
+/// Stages, builds and grades one submission into <outDir>/<student>/. Never throws:
+/// every failure becomes the student's status and notes. `progress` gets one-line
+/// updates ("building...", "grading...").
+StudentGrade gradeSubmission(const Submission& submission, const Framework& framework, const ClassOptions& options,
+                             const std::function<void(const std::string&)>& progress);
+
+/// Points per lab and overall from a results.json as stoa-grade writes it
+/// (tests named "<lab>/<case>" or tagged with the lab). Throws InputError when it does not parse.
+void addResults(const std::filesystem::path& resultsJson, StudentGrade& grade);
+
+/// The gradebook as CSV text: student, one column per lab, total, max, status, notes.
+std::string gradebookCsv(const std::vector<std::string>& labs, const std::vector<StudentGrade>& grades);
+
+/// The whole batch; returns the exit status (0 when the batch ran, whatever the grades).
+int runClassGrade(const ClassOptions& options, const Framework& framework, std::ostream& out, std::ostream& err);
+
+} // namespace stoa::grader

@@ -1,0 +1,106 @@
+#pragma once
+// Hints from the known-mistake gallery: when a student's failed image is
+// closer to a planted mistake's render than to the reference, the result names
+// that mistake, its hint and its docs section.
+//
+// The gallery lives next to the references (written by
+// `stoa-grade --update-references` from a solutions build):
+//
+//   autograder/references/<lab>/<case>.png                          the reference
+//   autograder/references/<lab>/mistakes/<mistake>/mistake.txt      hint:, docs:, fails:, file:
+//   autograder/references/<lab>/mistakes/<mistake>/<case>.png       what the mistake renders
+//
+// It ships with the student release (it holds no solution code), so hints work
+// where solutions/ is absent.
+
+#include "CaseRunner.hpp"
+#include "GradeResult.hpp"
+#include "MistakeFile.hpp"
+
+#include <stoa/image/Image.hpp>
+#include <stoa/image/ImageCompare.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stoa::grader {
+
+/// The file in each mistake's gallery folder that carries its hint.
+constexpr const char* kGalleryInfoFile = "mistake.txt";
+
+/// One planted mistake as the gallery keeps it.
+struct KnownMistake {
+    std::string name;                  // "no_half_vector" (the folder's name)
+    std::string hint;
+    std::string docs;                  // "labs/02_shading.md#the-half-vector", as in the .mistake file
+    std::filesystem::path folder;      // <referenceDir>/mistakes/<name>
+
+    /// <folder>/<caseName>.png (it may not exist: a mistake renders only the cases it fails).
+    std::filesystem::path imageFor(const std::string& caseName) const { return folder / (caseName + ".png"); }
+};
+
+/// True when `a` (a comparison's figures) is strictly closer than `b`: by the
+/// FLIP mean when both have one (>= 0) and they differ, else by the fraction of
+/// bad pixels, then by the mean error of the shift-tolerant gate.
+bool isCloser(const CompareMetrics& a, const CompareMetrics& b);
+
+/// The gallery info file's text for `mistake`, parseable by parseMistakeHeader().
+/// `cases` are the cases it has images for.
+std::string galleryInfoText(const MistakeFile& mistake, const std::vector<std::string>& cases);
+
+/// The known mistakes of the lab whose references are in `referenceDir`, sorted
+/// by name; none when there is no gallery. Throws InputError for an info file
+/// that does not parse.
+std::vector<KnownMistake> loadGallery(const std::filesystem::path& referenceDir);
+
+/// One gallery image of a case, with the mistake it shows.
+struct GalleryImage {
+    KnownMistake mistake;
+    Image image;
+};
+
+/// The gallery images of every case of a run, read before any lab program runs,
+/// so that no program can change or remove what its hints are chosen from.
+class HintGallery {
+public:
+    /// Reads the gallery images of each job's case (from the gallery next to the
+    /// job's reference). Never throws: a gallery whose info file does not parse,
+    /// or an image that does not decode, gives no hints.
+    static HintGallery load(const std::vector<CaseJob>& jobs);
+
+    /// The images for `jobs[jobIndex]` of load() (none for an index beyond them).
+    const std::vector<GalleryImage>& imagesFor(std::size_t jobIndex) const;
+    /// How many images it holds in all.
+    std::size_t imageCount() const;
+
+private:
+    std::vector<std::vector<GalleryImage>> m_images;
+};
+
+/// The index in `gallery` of the mistake `rendered` is closest to, when that
+/// one is strictly closer than `reference`; nullopt otherwise (also for an
+/// empty gallery). Images of another size than `rendered` are skipped.
+/// `referenceDistance` is the rendered-vs-reference distance when known.
+std::optional<std::size_t> closestMistake(const Image& rendered, const Image& reference,
+                                          const std::vector<GalleryImage>& gallery, const CompareOptions& options,
+                                          const std::optional<CompareMetrics>& referenceDistance = std::nullopt);
+
+/// "docs/labs/01_transforms.md#the-view-matrix" for "labs/01_transforms.md#the-view-matrix"
+/// ("" for ""; a leading "docs/" or "/" is not doubled).
+std::string docsPath(const std::string& docs);
+
+/// Sets hint, hintDocs and hintMistake on every failed result whose image is
+/// closer to a gallery image of its case than to its reference. `jobs[i]` is
+/// the job that produced `results[i]`, and `gallery` was loaded from `jobs`
+/// (before grading). The reference distance is the one grading measured; the
+/// reference is read only when a result lacks it. Never throws. Works on
+/// `parallelJobs` cases at once.
+void addHints(std::vector<GradeResult>& results, const std::vector<CaseJob>& jobs, const HintGallery& gallery,
+              int parallelJobs = 1);
+
+/// The same with the gallery read now.
+void addHints(std::vector<GradeResult>& results, const std::vector<CaseJob>& jobs, int parallelJobs = 1);
+
+} // namespace stoa::grader

@@ -1,0 +1,148 @@
+// The batch grader's logic without building anything: reading results.json,
+// finding a submission's labs/ tree, student names, the gradebook, and the
+// determinism check's exact image comparison.
+
+#include "BatchGradeJson.hpp"
+#include "BatchGradeSubmissions.hpp"
+#include "ClassGrader.hpp"
+#include "DeterminismCheck.hpp"
+
+#include <stoa/core/InputError.hpp>
+
+#include "TempFolder.hpp"
+#include "catch.hpp"
+
+using namespace stoa;
+using namespace stoa::grader;
+
+TEST_CASE("parseJson reads what JsonWriter writes, and dump() writes it back") {
+    std::string text = R"({"score": 7.5, "tests": [{"name": "01_a/x", "ok": true, "tags": ["01_a", "failed"],
+                          "output": "line\nnext \"q\" \u00e9"}], "none": null})";
+    JsonValue document = parseJson(text);
+    REQUIRE(document.isObject());
+    CHECK(document.find("score")->asNumber() == 7.5);
+    const JsonValue& test = document.find("tests")->items().at(0);
+    CHECK(test.find("name")->asString() == "01_a/x");
+    CHECK(test.find("ok")->asBoolean());
+    CHECK(test.find("output")->asString() == "line\nnext \"q\" \xC3\xA9");
+    CHECK(test.find("tags")->items().size() == 2);
+    CHECK(document.find("none")->type() == JsonValue::Type::Null);
+    CHECK(document.find("missing") == nullptr);
+
+    JsonValue again = parseJson(document.dump());
+    CHECK(again.find("tests")->items().at(0).find("output")->asString() == test.find("output")->asString());
+    CHECK(again.members().size() == document.members().size());
+}
+
+TEST_CASE("parseJson names the file and line of bad JSON") {
+    try {
+        parseJson("{\n  \"a\": 1,\n  \"b\" 2\n}", "results.json");
+        FAIL("no error");
+    } catch (const InputError& error) {
+        CHECK(error.file() == "results.json");
+        CHECK(error.line() == 3);
+        CHECK(std::string(error.what()).find("':'") != std::string::npos);
+    }
+    CHECK_THROWS_AS(parseJson("[1, 2"), InputError);
+    CHECK_THROWS_AS(parseJson("{} extra"), InputError);
+}
+
+TEST_CASE("studentName drops the archive extension and odd characters") {
+    CHECK(studentName("subs/alice") == "alice");
+    CHECK(studentName("subs/bob.zip") == "bob");
+    CHECK(studentName("subs/carol.tar.gz") == "carol");
+    CHECK(studentName("subs/Dan Smith.TGZ") == "Dan_Smith");
+}
+
+TEST_CASE("findLabsFolder finds labs/ at the top, one folder down, or the lab folders themselves") {
+    test::TempFolder folder("batch-labs");
+    folder.write("top/labs/01_transforms/transforms.cpp", "");
+    CHECK(findLabsFolder(folder / "top") == folder / "top" / "labs");
+
+    folder.write("nested/alice-main/labs/01_transforms/transforms.cpp", "");
+    folder.write("nested/__MACOSX/junk", "");
+    folder.write("nested/.hidden", "");
+    CHECK(findLabsFolder(folder / "nested") == folder / "nested" / "alice-main" / "labs");
+
+    folder.write("bare/01_transforms/transforms.cpp", "");
+    CHECK(findLabsFolder(folder / "bare") == folder / "bare");
+
+    folder.write("empty/readme.txt", "");
+    CHECK_THROWS_AS(findLabsFolder(folder / "empty"), InputError);
+}
+
+TEST_CASE("findSubmissions takes folders and archives, skips the rest, refuses two of one student") {
+    test::TempFolder folder("batch-find");
+    folder.write("subs/alice/labs/x", "");
+    folder.write("subs/bob.zip", "");
+    folder.write("subs/carol.tar.gz", "");
+    folder.write("subs/notes.txt", "");
+    folder.write("subs/.DS_Store", "");
+    std::vector<std::string> skipped;
+    std::vector<Submission> submissions = findSubmissions(folder / "subs", skipped);
+    REQUIRE(submissions.size() == 3);
+    CHECK(submissions[0].student == "alice");
+    CHECK(submissions[0].kind == SubmissionKind::Folder);
+    CHECK(submissions[1].kind == SubmissionKind::Zip);
+    CHECK(submissions[2].kind == SubmissionKind::TarGz);
+    REQUIRE(skipped.size() == 1);
+    CHECK(skipped[0].find("notes.txt") != std::string::npos);
+
+    folder.write("subs/alice.zip", "");
+    CHECK_THROWS_AS(findSubmissions(folder / "subs", skipped), InputError);
+}
+
+TEST_CASE("addResults sums points per lab from results.json and names what did not pass") {
+    test::TempFolder folder("batch-results");
+    std::filesystem::path file = folder.write("results.json", R"({"score": 3, "tests": [
+        {"name": "01_a/one", "score": 2, "max_score": 2, "status": "passed", "tags": ["01_a", "passed"]},
+        {"name": "01_a/two", "score": 0, "max_score": 3, "status": "failed", "tags": ["01_a", "failed"]},
+        {"name": "02_b/one", "score": 0, "max_score": 4, "status": "failed", "tags": ["02_b", "not attempted"]}]})");
+    StudentGrade grade;
+    grade.labs["01_a"];
+    grade.labs["02_b"];
+    addResults(file, grade);
+    CHECK(grade.labs["01_a"].points == 2);
+    CHECK(grade.labs["01_a"].maxPoints == 5);
+    CHECK(grade.labs["01_a"].note == "1 failed");
+    CHECK(grade.labs["02_b"].maxPoints == 4);
+    CHECK(grade.labs["02_b"].note == "not attempted");
+}
+
+TEST_CASE("gradebookCsv writes one row per student and quotes notes with commas") {
+    StudentGrade alice;
+    alice.student = "alice";
+    alice.labs["01_a"].points = 2.5;
+    alice.points = 2.5;
+    alice.maxPoints = 5;
+    alice.status = "graded";
+    alice.notes = {"01_a: 1 failed, 1 error", "say \"hi\""};
+    std::string csv = gradebookCsv({"01_a"}, {alice});
+    CHECK(csv == "student,01_a,total,max,status,notes\n"
+                 "alice,2.5,2.5,5,graded,\"01_a: 1 failed, 1 error; say \"\"hi\"\"\"\n");
+}
+
+TEST_CASE("compareExactly counts differing pixels and the largest difference") {
+    Image a(4, 3, 4);
+    Image b(4, 3, 4);
+    CHECK(compareExactly(a, b).identical());
+    CHECK(compareExactly(a, b).describe() == "identical");
+    b.data()[0] = 2;                 // pixel (0,0), red
+    b.data()[4 * 5 + 2] = 1;         // pixel (1,1), blue
+    ImageDifference difference = compareExactly(a, b);
+    CHECK(difference.differingPixels == 2);
+    CHECK(difference.maxChannelDifference == 2);
+    CHECK(difference.describe() == "2 pixels differ, by at most 2 levels");
+    CHECK_FALSE(compareExactly(a, Image(3, 4, 4)).sameSize);
+    CHECK(determinismVariants().size() == 4);
+}
+
+TEST_CASE("The determinism check (--determinism) is its own mode and combines with --lab and --case only") {
+    Options options = parseCommandLine({"--determinism", "--lab", "01", "--case", "orbit_front", "--jobs", "2"});
+    CHECK(options.mode == Mode::Determinism);
+    CHECK(options.labs == std::vector<std::string>{"01"});
+    CHECK_THROWS_AS(parseCommandLine({"--determinism", "--check-mistakes"}), UsageError);
+    CHECK_THROWS_AS(parseCommandLine({"--determinism", "--update-references"}), UsageError);
+    CHECK_THROWS_AS(parseCommandLine({"--determinism", "--json", "r.json"}), UsageError);
+    CHECK_THROWS_AS(parseCommandLine({"--determinism=yes"}), UsageError);
+}

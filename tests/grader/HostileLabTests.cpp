@@ -1,0 +1,195 @@
+// The grader against hostile lab programs: tests/grader/hostile_lab.cpp
+// misbehaves in the way each case's name says. Every case must fail with a clear
+// reason while the others still grade, the references must survive, and the
+// grader must still write its results.
+
+#include "catch.hpp"
+
+#include "GradeCommand.hpp"
+#include "Grader.hpp"
+#include "LabPlan.hpp"
+#include "ProcessContainment.hpp"
+#include "TempFolder.hpp"
+
+#include <stoa/image/Image.hpp>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <sstream>
+
+using namespace stoa::grader;
+using stoa::Image;
+
+namespace {
+
+const char* const kHostileLab = STOA_HOSTILE_LAB;
+
+Image gradient(int width, int height) {
+    Image image(width, height, 4);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            image.setPixel(x, y, {static_cast<std::uint8_t>(x * 16), static_cast<std::uint8_t>(y * 16), 128, 255});
+    return image;
+}
+
+std::string readAll(const std::filesystem::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+}
+
+// A TCP socket listening on 127.0.0.1, to see whether a lab program can reach it.
+class Listener {
+public:
+    Listener() {
+        m_fd = socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        socklen_t length = sizeof address;
+        if (m_fd >= 0 && bind(m_fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0 &&
+            listen(m_fd, 4) == 0 && getsockname(m_fd, reinterpret_cast<sockaddr*>(&address), &length) == 0)
+            m_port = ntohs(address.sin_port);
+    }
+    ~Listener() {
+        if (m_fd >= 0) close(m_fd);
+    }
+    int port() const { return m_port; }
+
+private:
+    int m_fd = -1;
+    int m_port = 0;
+};
+
+const char* const kCases[] = {"good",          "segfault",         "abort",          "infinite_loop",
+                              "memory_bomb",   "fork_bomb",        "uncaught_exception", "wrong_size",
+                              "write_references", "garbage_output", "gl_error",       "network"};
+
+} // namespace
+
+TEST_CASE("hostile lab programs: each misdeed fails its case with a clear reason, the rest still grade",
+          "[grader][isolation]") {
+    stoa::test::TempFolder folder("hostile");
+    std::filesystem::path references = folder.path() / "references" / "99_hostile";
+    std::filesystem::create_directories(references);
+    std::vector<CaseJob> jobs;
+    for (const char* name : kCases) {
+        CaseJob job;
+        job.lab = "99_hostile";
+        job.program = kHostileLab;
+        job.spec.name = name;
+        job.spec.width = 16;
+        job.spec.height = 16;
+        job.spec.points = 1;
+        job.reference = references / (std::string(name) + ".png");
+        job.workDir = folder.path() / "work" / name;
+        gradient(16, 16).savePng(job.reference);
+        jobs.push_back(job);
+    }
+    std::map<std::string, std::string> before;
+    for (const auto& entry : std::filesystem::directory_iterator(references))
+        before[entry.path().filename().string()] = readAll(entry.path());
+
+    Listener listener;
+    REQUIRE(listener.port() > 0);
+    setenv("STOA_HOSTILE_PORT", std::to_string(listener.port()).c_str(), 1);
+    setenv("STOA_HOSTILE_REFERENCES", references.c_str(), 1);
+
+    RunSettings settings;
+    settings.limits = defaultLimits(3.0);
+    settings.limits.addressSpaceBytes = 512ull << 20;  // the memory bomb stops at 512 MiB
+    auto start = std::chrono::steady_clock::now();
+    std::vector<GradeResult> results = gradeCases(jobs, settings, 3);
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    REQUIRE(results.size() == jobs.size());
+    std::map<std::string, GradeResult> byName;
+    for (const GradeResult& result : results) byName[result.caseName] = result;
+    auto reasonOf = [&](const std::string& name) {
+        INFO(name << ": " << statusName(byName[name].status) << ": " << byName[name].reason);
+        CHECK(byName[name].points == 0);
+        return byName[name].reason;
+    };
+
+    CHECK(byName["good"].status == GradeStatus::Passed);
+    CHECK(byName["good"].points == 1);
+    for (const GradeResult& result : results) {
+        if (result.caseName == "good") continue;
+        INFO(result.caseName << ": " << result.reason);
+        CHECK(result.status == GradeStatus::Error);
+        CHECK_FALSE(result.reason.empty());
+        CHECK(printableText(result.reason) == result.reason);
+        CHECK(printableText(result.programOutput) == result.programOutput);
+    }
+    CHECK(reasonOf("segfault").rfind("crashed with SIGSEGV", 0) == 0);
+    CHECK(reasonOf("abort").rfind("crashed with SIGABRT", 0) == 0);
+    CHECK(reasonOf("infinite_loop") == "timed out after 3 s");
+    CHECK(reasonOf("memory_bomb").find("bad_alloc") != std::string::npos);
+    CHECK(reasonOf("fork_bomb").find("started more than") != std::string::npos);
+    CHECK(reasonOf("uncaught_exception").find("a student's bug") != std::string::npos);
+    CHECK(reasonOf("wrong_size") == "rendered 8x4, expected 16x16");
+    CHECK(reasonOf("write_references").find("tried to modify the reference images") != std::string::npos);
+    CHECK(reasonOf("garbage_output").rfind("exited with status 1", 0) == 0);
+    CHECK(byName["garbage_output"].programOutput.size() < 3 * 4096 + 200);
+    CHECK(reasonOf("gl_error") ==
+          "exited with status 1: lab99_hostile: glDrawElements (Renderer.cpp:42): GL_INVALID_OPERATION");
+    if (networkIsolationFlags() != 0) CHECK(reasonOf("network").find("no network") != std::string::npos);
+    else WARN(networkIsolationNote());
+
+    // The references are back as they were, and the planted file is gone.
+    std::map<std::string, std::string> after;
+    for (const auto& entry : std::filesystem::directory_iterator(references))
+        after[entry.path().filename().string()] = readAll(entry.path());
+    CHECK(after == before);
+    // Nothing waited for the full timeout but the infinite loop (3 cases at once).
+    CHECK(seconds < 20.0);
+}
+
+TEST_CASE("printableText keeps text and replaces binary and control bytes", "[grader][isolation]") {
+    CHECK(printableText("plain\ttext\n") == "plain\ttext\n");
+    CHECK(printableText("caf\xC3\xA9 \xE2\x9C\x93") == "caf\xC3\xA9 \xE2\x9C\x93");
+    CHECK(printableText("a\r\nb\rc") == "a\nb\nc");
+    CHECK(printableText(std::string("nul\0bell\x07", 9)) == "nul?bell?");
+    CHECK(printableText("\xFF\xFE") == "\xEF\xBF\xBD\xEF\xBF\xBD");
+    CHECK(printableText("cut \xE2\x9C") == "cut \xEF\xBF\xBD\xEF\xBF\xBD");   // truncated mid-character
+    CHECK(printableText("\xC0\xAF") == "\xEF\xBF\xBD\xEF\xBF\xBD");           // overlong '/'
+    CHECK(printableText("\x1B[31mred") == "?[31mred");
+}
+
+TEST_CASE("the grader writes results.json itself, after every lab program has ended", "[grader][isolation]") {
+    stoa::test::TempFolder folder("hostile-results");
+    folder.write("labs/99_hostile/cases.ini",
+                 "lab = 99_hostile\ntitle = Hostile\n\n"
+                 "[case good]\nresolution = 16 16\npoints = 1\n\n"
+                 "[case write_results]\nresolution = 16 16\npoints = 1\n\n"
+                 "[case segfault]\nresolution = 16 16\npoints = 1\n");
+    std::filesystem::create_directories(folder.path() / "autograder/references/99_hostile");
+    for (const char* name : {"good", "write_results", "segfault"})
+        gradient(16, 16).savePng(folder.path() / "autograder/references/99_hostile" / (std::string(name) + ".png"));
+    std::filesystem::create_directories(folder.path() / "bin");
+    std::filesystem::create_symlink(kHostileLab, folder.path() / "bin/lab99_hostile");
+    std::filesystem::path json = folder.path() / "results/results.json";
+    std::filesystem::create_directories(json.parent_path());
+    setenv("STOA_HOSTILE_RESULTS", json.c_str(), 1);
+
+    Options options;
+    options.jsonFile = json;
+    options.workDir = folder.path() / "work";
+    options.timeoutSeconds = 10;
+    std::ostringstream out;
+    std::ostringstream err;
+    Environment env{folder.path(), folder.path() / "bin", out, err};
+    CHECK(runGrade(options, env) == 0);
+    std::string written = readAll(json);
+    INFO(written);
+    CHECK(written.find("\"forged\"") == std::string::npos);
+    CHECK(written.find("\"score\": 1") != std::string::npos);
+    CHECK(written.find("crashed with SIGSEGV") != std::string::npos);
+    CHECK(out.str().find("segfault") != std::string::npos);
+}

@@ -1,0 +1,119 @@
+// The self-contained HTML report.
+
+#include "catch.hpp"
+
+#include "HtmlReport.hpp"
+
+#include "TempFolder.hpp"
+
+#include <fstream>
+
+using namespace stoa::grader;
+
+namespace {
+
+GradeResult result(const std::string& name, GradeStatus status, double points, double maxPoints,
+                   const std::string& reason) {
+    GradeResult r;
+    r.lab = "02_shading";
+    r.caseName = name;
+    r.status = status;
+    r.points = points;
+    r.maxPoints = maxPoints;
+    r.reason = reason;
+    return r;
+}
+
+std::size_t find(const std::string& text, const std::string& what) { return text.find(what); }
+
+} // namespace
+
+TEST_CASE("failuresFirst orders failed, error, no reference, not attempted, passed", "[grader][report][html]") {
+    std::vector<GradeResult> results = {result("a", GradeStatus::Passed, 1, 1, ""),
+                                        result("b", GradeStatus::NotAttempted, 0, 1, ""),
+                                        result("c", GradeStatus::Failed, 0, 1, ""),
+                                        result("d", GradeStatus::Error, 0, 1, ""),
+                                        result("e", GradeStatus::Failed, 0, 1, ""),
+                                        result("f", GradeStatus::NoReference, 0, 1, "")};
+    CHECK(failuresFirst(results) == std::vector<std::size_t>{2, 4, 3, 5, 1, 0});
+    CHECK(failuresFirst({}).empty());
+}
+
+TEST_CASE("htmlReport: totals first, failures first, images embedded, hint linked, text escaped",
+          "[grader][report][html]") {
+    stoa::test::TempFolder folder("html");
+    std::vector<GradeResult> results = {
+        result("sun", GradeStatus::Passed, 5, 5, "0.00% pixels off"),
+        result("highlights", GradeStatus::Failed, 0, 5, "3.2% pixels off <max 200> & \"more\""),
+        result("secret", GradeStatus::Failed, 0, 2, "hidden one"),
+        result("crash", GradeStatus::Error, 0, 1, "crashed with SIGSEGV"),
+    };
+    results[1].renderedImage = folder.write("yours.png", "YOURS");
+    results[1].referenceImage = folder.write("reference.png", "REF");
+    results[1].heatMapImage = folder.write("heat.png", "HEAT");
+    results[1].metrics = CompareMetrics{0.032, 4.1, 200, 0.0421};
+    results[1].hint = "Use H = normalize(L + V) <not R>.";
+    results[1].hintDocs = "docs/labs/02_shading.md#the-half-vector";
+    results[1].hintMistake = "no_half_vector";
+    results[2].visibility = stoa::Visibility::Hidden;
+    results[2].renderedImage = results[1].renderedImage;
+    results[2].referenceImage = results[1].referenceImage;
+    results[2].heatMapImage = results[1].heatMapImage;
+    results[3].programOutput = "Segmentation fault <core dumped>\n\x1b[31m";
+
+    HtmlReportOptions options;
+    options.title = "Report for <ada>";
+    options.docsBaseUrl = "file:///home/ada/stoa/";
+    std::string html = htmlReport(results, summarize(results), options);
+
+    CHECK(html.rfind("<!DOCTYPE html>\n<html", 0) == 0);
+    CHECK(html.substr(html.size() - 8) == "</html>\n");
+    CHECK(find(html, "<title>Report for &lt;ada&gt;</title>") != std::string::npos);
+    CHECK(find(html, "score: 5 / 13") < find(html, "<section"));
+    // Failures first: both failed cases, then the error, then the pass.
+    CHECK(find(html, "02_shading/highlights") < find(html, "02_shading/crash"));
+    CHECK(find(html, "02_shading/secret") < find(html, "02_shading/crash"));
+    CHECK(find(html, "02_shading/crash") < find(html, "02_shading/sun"));
+    // Escaped text; images as data URIs (base64 of "YOURS", "REF", "HEAT"); nothing loaded from elsewhere.
+    CHECK(find(html, "3.2% pixels off &lt;max 200&gt; &amp; &quot;more&quot;") != std::string::npos);
+    CHECK(find(html, "<max 200>") == std::string::npos);
+    CHECK(find(html, "src=\"data:image/png;base64,WU9VUlM=\"") != std::string::npos);
+    CHECK(find(html, "src=\"data:image/png;base64,UkVG\"") != std::string::npos);
+    CHECK(find(html, "src=\"data:image/png;base64,SEVBVA==\"") != std::string::npos);
+    CHECK(find(html, "src=\"http") == std::string::npos);
+    CHECK(find(html, "<link") == std::string::npos);
+    CHECK(find(html, "<script") == std::string::npos);
+    // The metrics, and the hint with its link.
+    CHECK(find(html, "3.200%") != std::string::npos);
+    CHECK(find(html, "0.0421") != std::string::npos);
+    CHECK(find(html, "<code>no_half_vector</code>") != std::string::npos);
+    CHECK(find(html, "Use H = normalize(L + V) &lt;not R&gt;.") != std::string::npos);
+    CHECK(find(html, "href=\"file:///home/ada/stoa/docs/labs/02_shading.md#the-half-vector\"") != std::string::npos);
+    // The hidden case shows the student's image but not the reference or the heat map.
+    std::size_t secret = find(html, "id=\"02_shading-secret\"");
+    std::string secretSection = html.substr(secret, html.find("</section>", secret) - secret);
+    CHECK(secretSection.find("WU9VUlM=") != std::string::npos);
+    CHECK(secretSection.find("UkVG") == std::string::npos);
+    CHECK(secretSection.find("SEVBVA==") == std::string::npos);
+    // The crashed program's output, escaped and without the terminal escape.
+    CHECK(find(html, "Segmentation fault &lt;core dumped&gt;") != std::string::npos);
+    CHECK(find(html, "\x1b") == std::string::npos);
+
+    options.showHiddenReferences = true;
+    std::string instructor = htmlReport(results, summarize(results), options);
+    std::size_t at = find(instructor, "id=\"02_shading-secret\"");
+    CHECK(instructor.substr(at, instructor.find("</section>", at) - at).find("UkVG") != std::string::npos);
+}
+
+TEST_CASE("writeHtmlReport writes the page and names a path it cannot write", "[grader][report][html]") {
+    stoa::test::TempFolder folder("html-write");
+    std::vector<GradeResult> results = {result("sun", GradeStatus::Passed, 5, 5, "")};
+    std::filesystem::path path = folder / "out/report.html";
+    writeHtmlReport(path, results, summarize(results));
+    std::ifstream file(path);
+    std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    CHECK(text == htmlReport(results, summarize(results)));
+    folder.write("plain-file", "x");
+    CHECK_THROWS_WITH(writeHtmlReport(folder / "plain-file/report.html", results, summarize(results)),
+                      Catch::Contains("plain-file/report.html"));
+}

@@ -1,0 +1,167 @@
+// A "lab program" that misbehaves on purpose, for the grader's isolation tests.
+// It takes the lab CLI (--render CASE --output FILE [--backend NAME]) and does
+// what the case's name says. "good" and the cheats render a 16x16 gradient (the
+// tests' reference); the environment tells it where the real files are, as a
+// student who knows the repository's layout would:
+//   STOA_HOSTILE_REFERENCES  a folder of reference images to overwrite
+//   STOA_HOSTILE_RESULTS     the results file to forge
+//   STOA_HOSTILE_PORT        a TCP port on 127.0.0.1 that the test listens on
+
+#include <stoa/image/Image.hpp>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+stoa::Image gradient(int width, int height, int shift = 0) {
+    stoa::Image image(width, height, 4);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            image.setPixel(x, y, {static_cast<std::uint8_t>((x * 16 + shift) & 255),
+                                  static_cast<std::uint8_t>(y * 16), 128, 255});
+    return image;
+}
+
+const char* environment(const char* name) {
+    const char* value = std::getenv(name);
+    if (!value) {
+        std::fprintf(stderr, "hostile_lab: %s is not set\n", name);
+        std::exit(1);
+    }
+    return value;
+}
+
+// Overwrites every reference with a wrong image, then renders the same wrong
+// image: without the grader's guard, the case would pass.
+int overwriteReferences(const std::string& output) {
+    stoa::Image wrong = gradient(16, 16, 128);
+    for (const auto& entry : std::filesystem::directory_iterator(environment("STOA_HOSTILE_REFERENCES")))
+        if (entry.path().extension() == ".png") wrong.savePng(entry.path());
+    std::ofstream(std::filesystem::path(environment("STOA_HOSTILE_REFERENCES")) / "planted.png") << "x";
+    wrong.savePng(output);
+    return 0;
+}
+
+int forgeResults(const std::string& output) {
+    std::ofstream(environment("STOA_HOSTILE_RESULTS")) << "{\"score\": 1000, \"forged\": true}\n";
+    gradient(16, 16, 128).savePng(output);
+    return 0;
+}
+
+int useNetwork(const std::string& output) {
+    int fd = socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0) {
+        std::printf("no network: socket: %s\n", std::strerror(errno));
+        return 1;
+    }
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(std::atoi(environment("STOA_HOSTILE_PORT"))));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
+        std::printf("no network: connect: %s\n", std::strerror(errno));
+        close(fd);
+        return 1;
+    }
+    close(fd);
+    std::printf("connected to the test's port\n");
+    gradient(16, 16).savePng(output);
+    return 0;
+}
+
+int forkBomb() {
+    // Linear rather than exponential, so a grader without a process limit (root)
+    // still stops it long before the machine suffers.
+    for (;;) {
+        pid_t pid = fork();
+        if (pid == 0) {
+            pause();
+            _exit(0);
+        }
+        if (pid < 0) usleep(1000);
+    }
+}
+
+int memoryBomb() {
+    std::vector<char*> blocks;
+    for (;;) {
+        char* block = new char[64 << 20];
+        std::memset(block, 1, 64 << 20);
+        blocks.push_back(block);
+    }
+}
+
+int garbage() {
+    // A megabyte of every byte value, no newline, then a failure.
+    std::string bytes;
+    for (int i = 0; i < (1 << 20); ++i) bytes += static_cast<char>((i * 7919) & 255);
+    std::fwrite(bytes.data(), 1, bytes.size(), stdout);
+    return 1;
+}
+
+int glError(const std::string& output) {
+    // What a lab program prints when checked mode catches a GL error; without
+    // checked mode the error would go unnoticed and a wrong image would pass through.
+    const char* checked = std::getenv("STOA_GL_CHECKED");
+    if (!checked || std::string(checked) != "1") {
+        gradient(16, 16, 128).savePng(output);
+        return 0;
+    }
+    std::fprintf(stderr, "lab99_hostile: glDrawElements (Renderer.cpp:42): GL_INVALID_OPERATION\n");
+    return 1;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::string name;
+    std::string output;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        if (std::strcmp(argv[i], "--render") == 0) name = argv[i + 1];
+        else if (std::strcmp(argv[i], "--output") == 0) output = argv[i + 1];
+    }
+    if (name.empty() || output.empty()) {
+        std::fprintf(stderr, "usage: hostile_lab --render CASE --output FILE\n");
+        return 2;
+    }
+    if (name == "good") {
+        gradient(16, 16).savePng(output);
+        return 0;
+    }
+    if (name == "segfault") {
+        volatile int* nowhere = nullptr;
+        *nowhere = 1;
+    }
+    if (name == "abort") std::abort();
+    if (name == "infinite_loop")
+        for (volatile unsigned spin = 0;; spin = spin + 1) {
+        }
+    if (name == "memory_bomb") return memoryBomb();
+    if (name == "fork_bomb") return forkBomb();
+    if (name == "uncaught_exception") throw std::runtime_error("a student's bug");
+    if (name == "wrong_size") {
+        gradient(8, 4).savePng(output);
+        return 0;
+    }
+    if (name == "write_references") return overwriteReferences(output);
+    if (name == "write_results") return forgeResults(output);
+    if (name == "garbage_output") return garbage();
+    if (name == "gl_error") return glError(output);
+    if (name == "network") return useNetwork(output);
+    std::fprintf(stderr, "hostile_lab: no behaviour for case '%s'\n", name.c_str());
+    return 2;
+}
