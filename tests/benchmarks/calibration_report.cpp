@@ -112,8 +112,11 @@ int main(int argc, char** argv) {
     for (const fs::path& labs : {source / "autograder" / "references", source / "solutions"}) {
         if (!fs::is_directory(labs)) continue;
         for (const auto& entry : fs::recursive_directory_iterator(labs)) {
-            if (entry.path().extension() != ".png" || entry.path().string().find("gallery") != std::string::npos) continue;
-            if (entry.path().parent_path().filename() != "references" && labs.filename() == "solutions") continue;
+            // autograder/references/LAB/CASE.png and solutions/LAB/references/CASE.png only (not the mistake gallery).
+            const fs::path folder = entry.path().parent_path();
+            const bool isReference = labs.filename() == "solutions" ? folder.filename() == "references"
+                                                                    : folder.parent_path() == labs;
+            if (entry.path().extension() != ".png" || !isReference) continue;
             const stoa::Image expected = stoa::Image::load(entry.path());
             stoa::Image shifted = expected;
             for (int y = 0; y < expected.height(); ++y)
