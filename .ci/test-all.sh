@@ -19,5 +19,8 @@ cmake --build build-sanitize -j"$jobs"
 export LSAN_OPTIONS="suppressions=$PWD/.ci/lsan.supp:print_suppressions=0"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE "docs|release"
+# hostile_lab crashes, loops and bombs on purpose; under ASan its crashes are caught
+# and reported by the sanitizer runtime and exit differently from the normal build
+# students run, so its two tests run in the solutions build only.
+ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE "docs|release" -E "hostile lab programs|writes results.json itself"
 echo "== all tests passed"
