@@ -105,6 +105,7 @@ GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, Reference
     GradeResult result;
     result.lab = job.lab;
     result.caseName = job.spec.name;
+    result.cascade = job.cascade;
     result.maxPoints = job.spec.points;
     result.visibility = job.spec.visibility;
     result.referenceImage = job.reference;
@@ -171,7 +172,8 @@ GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, Reference
         result.status = GradeStatus::Failed;
         try {
             std::filesystem::path heatMap = job.workDir / "heatmap.png";
-            differenceHeatMap(render.image, reference, job.spec.compare).savePng(heatMap);
+            // From the comparison already made: FLIP does not run twice.
+            differenceHeatMap(render.image, reference, comparison, job.spec.compare).savePng(heatMap);
             result.heatMapImage = heatMap;
         } catch (const std::exception& error) {
             result.reason += " (no heat map: " + std::string(error.what()) + ")";

@@ -25,6 +25,7 @@ struct CaseJob {
     std::filesystem::path reference;      // may not exist: the result is then "no reference"
     std::filesystem::path workDir;        // emptied and recreated; the program runs and writes there
     std::filesystem::path casesFile;      // passed as --cases when not empty: a hidden case's manifest
+    bool cascade = false;                 // `program` is the lab's cascade program (Cascade.hpp)
 };
 
 struct RunSettings {

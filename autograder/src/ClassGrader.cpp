@@ -111,6 +111,13 @@ std::string labOfTest(const JsonValue& test) {
     return text.substr(0, text.find('/'));
 }
 
+bool hasTag(const JsonValue& test, const std::string& wanted) {
+    if (const JsonValue* tags = test.find("tags"))
+        for (const JsonValue& tag : tags->items())
+            if (tag.asString() == wanted) return true;
+    return false;
+}
+
 // stoa-grade tags each test with its lab and its status ("not attempted", "error", ...);
 // Gradescope's own "status" knows only passed and failed.
 std::string testStatus(const JsonValue& test) {
@@ -143,10 +150,15 @@ void addBuildFailures(const std::filesystem::path& resultsJson, const StudentGra
     for (const auto& [lab, message] : messages) {
         JsonValue test = JsonValue::object();
         test.set("score", JsonValue::number(0));
-        test.set("max_score", JsonValue::number(grade.labs.at(lab).maxPoints));
+        // A lab graded through its cascade program already has its points in the tests.
+        const LabGrade& labGrade = grade.labs.at(lab);
+        test.set("max_score", JsonValue::number(labGrade.cascadeBuilt ? 0.0 : labGrade.maxPoints));
         test.set("status", JsonValue::string("failed"));
         test.set("name", JsonValue::string(lab + "/build"));
-        test.set("output", JsonValue::string("The lab does not compile:\n" + message));
+        test.set("output", JsonValue::string(
+            (labGrade.cascadeBuilt ? "The lab does not compile with your earlier labs; it was graded with their "
+                                     "solutions instead (see its [cascade] tests):\n"
+                                   : "The lab does not compile:\n") + message));
         JsonValue tags = JsonValue::array();
         tags.push(JsonValue::string(lab));
         test.set("tags", tags);
@@ -214,6 +226,7 @@ void addResults(const std::filesystem::path& resultsJson, StudentGrade& grade) {
         LabGrade& sum = sums[lab];
         if (const JsonValue* score = test.find("score")) sum.points += score->asNumber();
         if (const JsonValue* max = test.find("max_score")) sum.maxPoints += max->asNumber();
+        if (hasTag(test, "not counted")) continue;   // the lab's other run counts (Cascade.hpp)
         ++counts[lab][testStatus(test)];
         ++totals[lab];
     }
@@ -222,6 +235,9 @@ void addResults(const std::filesystem::path& resultsJson, StudentGrade& grade) {
         labGrade.points = sum.points;
         labGrade.maxPoints = sum.maxPoints;
         labGrade.note = describeCounts(counts[lab], totals[lab]);
+        if (!labGrade.built && labGrade.cascadeBuilt)
+            labGrade.note = "does not compile with your earlier labs; graded with their solutions" +
+                            (labGrade.note.empty() ? "" : ": " + labGrade.note);
     }
 }
 
@@ -278,12 +294,18 @@ StudentGrade gradeSubmission(const Submission& submission, const Framework& fram
                 runProcess({framework.cmake.string(), "--build", buildDir.string(), "--target", lab, "-j", "1"},
                            studentDir, buildLimits(32768));
             writeText(studentDir / ("build-" + lab + ".log"), build.output);
-            if (build.exitedWith(0)) {
-                grade.labs[lab].built = true;
-                built.push_back(lab);
-            } else {
+            // The cascade program (Cascade.hpp), where the lab uses earlier labs
+            // and solutions exist; a lab without one just has no such target.
+            ProcessOutcome cascade = runProcess(
+                {framework.cmake.string(), "--build", buildDir.string(), "--target", lab + "-cascade", "-j", "1"},
+                studentDir, buildLimits(32768));
+            LabGrade& labGrade = grade.labs[lab];
+            labGrade.built = build.exitedWith(0);
+            labGrade.cascadeBuilt = cascade.exitedWith(0);
+            if (labGrade.built || labGrade.cascadeBuilt) built.push_back(lab);
+            if (!labGrade.built) {
                 buildErrors[lab] = withoutPrefix(compilerMessage(build.output), (buildDir / "track").string() + "/");
-                grade.labs[lab].note = "does not compile: " + firstError(buildErrors[lab]);
+                labGrade.note = "does not compile: " + firstError(buildErrors[lab]);
             }
         }
 

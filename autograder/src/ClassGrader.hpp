@@ -54,6 +54,7 @@ struct LabGrade {
     double points = 0.0;
     double maxPoints = 0.0;
     bool built = false;
+    bool cascadeBuilt = false;             // its cascade program built (earlier labs' solutions linked in)
     std::string note;                      // "not attempted", "2 failed", "does not compile: ..."
 };
 

@@ -1,5 +1,6 @@
 #include "GradeCommand.hpp"
 
+#include "Cascade.hpp"
 #include "Grader.hpp"
 #include "Hints.hpp"
 #include "HtmlReport.hpp"
@@ -54,6 +55,10 @@ int runGrade(const Options& options, const Environment& env) {
     for (const PlannedLab& lab : labs) {
         std::vector<CaseJob> labJobs = caseJobs(lab, lab.program, env.sourceDir, workDir);
         jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
+        if (lab.cascadeProgram.empty()) continue;
+        // The lab's cascade run, right after its own (Cascade.hpp).
+        labJobs = caseJobs(lab, lab.cascadeProgram, env.sourceDir, workDir, true);
+        jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
     }
 
     HintGallery gallery = HintGallery::load(jobs);   // read before any lab program runs
@@ -63,6 +68,7 @@ int runGrade(const Options& options, const Environment& env) {
                        env.err << progressLine(result, done, total) << std::endl;
                    });
     addHints(results, jobs, gallery, options.jobs);
+    applyCascadePolicy(results);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     Totals totals = summarize(results);

@@ -55,8 +55,14 @@ struct GradeResult {
     std::string hintDocs;                  // "docs/labs/02_shading.md#the-half-vector"; empty when none
     std::string hintMistake;               // the mistake's name, "no_half_vector"
 
-    /// "01_transforms/orbit_front"
-    std::string fullName() const { return lab + "/" + caseName; }
+    // Cascades (Cascade.hpp): a lab that uses earlier labs is graded twice where
+    // solutions exist, with the student's own earlier labs and with their
+    // solutions; the run with more points counts.
+    bool cascade = false;                  // rendered by <bin>/cascade/labNN_name (earlier labs' solutions linked in)
+    bool counted = true;                   // false: the lab's other run counts; the case adds nothing to the totals
+
+    /// "01_transforms/orbit_front"; "05_shadows/sun [cascade]" for a cascade run
+    std::string fullName() const { return lab + "/" + caseName + (cascade ? " [cascade]" : ""); }
     bool hasHint() const { return !hint.empty(); }
 };
 

@@ -15,6 +15,7 @@ std::vector<PlannedLab> planLabs(const Options& options, const Environment& env,
         lab.lab = entry.lab;
         lab.manifest = loadManifest(entry.manifestPath);
         lab.program = labProgram(env.binDir, entry.lab);
+        if (isExecutable(cascadeProgram(env.binDir, entry.lab))) lab.cascadeProgram = cascadeProgram(env.binDir, entry.lab);
         std::filesystem::path hidden = hiddenManifestPath(env.sourceDir, entry.lab);
         std::error_code error;
         if (std::filesystem::is_regular_file(hidden, error)) addHiddenCases(lab, hidden);
@@ -38,7 +39,7 @@ std::vector<PlannedLab> planLabs(const Options& options, const Environment& env,
     std::vector<PlannedLab> kept;
     for (PlannedLab& lab : planned) {
         if (lab.cases.empty()) continue;
-        if (requirePrograms && !isExecutable(lab.program)) {
+        if (requirePrograms && !isExecutable(lab.program) && lab.cascadeProgram.empty()) {
             env.err << "note: lab " << lab.lab << " is not built (no program " << lab.program.string()
                     << "); skipping it\n";
             continue;
@@ -63,7 +64,8 @@ void addHiddenCases(PlannedLab& lab, const std::filesystem::path& hiddenManifest
 }
 
 std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path& program,
-                              const std::filesystem::path& sourceDir, const std::filesystem::path& workDir) {
+                              const std::filesystem::path& sourceDir, const std::filesystem::path& workDir,
+                              bool cascade) {
     std::vector<CaseJob> jobs;
     for (const CaseSpec& spec : lab.cases) {
         bool hidden = !lab.hiddenManifest.empty() && std::filesystem::path(spec.file) == lab.hiddenManifest;
@@ -73,7 +75,8 @@ std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path
         job.spec = spec;
         job.reference = hidden ? hiddenReferenceImagePath(sourceDir, lab.lab, spec.name)
                                : referenceImagePath(sourceDir, lab.lab, spec.name);
-        job.workDir = workDir / lab.lab / spec.name;
+        job.workDir = cascade ? workDir / "cascade" / lab.lab / spec.name : workDir / lab.lab / spec.name;
+        job.cascade = cascade;
         if (hidden) job.casesFile = lab.hiddenManifest;
         jobs.push_back(std::move(job));
     }

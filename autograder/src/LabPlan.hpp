@@ -29,6 +29,7 @@ struct PlannedLab {
     std::vector<CaseSpec> cases;       // the manifest's cases that --case selects (all without --case)
     std::filesystem::path program;     // <bin>/labNN_name; may not exist when not required
     std::filesystem::path hiddenManifest;   // solutions/NN_name/hidden_cases.ini when it exists, else empty
+    std::filesystem::path cascadeProgram;   // <bin>/cascade/labNN_name when it is built, else empty (Cascade.hpp)
 };
 
 /// Reads a lab's hidden cases (solutions/NN_name/hidden_cases.ini) into the end
@@ -37,16 +38,19 @@ struct PlannedLab {
 void addHiddenCases(PlannedLab& lab, const std::filesystem::path& hiddenManifest);
 
 /// The labs --lab selects (all labs without it), with their manifests (public and,
-/// where solutions/ has them, hidden cases) and the cases --case selects. With `requirePrograms`, a lab whose program is not
-/// built is left out with a note on `env.err`. Throws UsageError for an unknown
+/// where solutions/ has them, hidden cases) and the cases --case selects. With
+/// `requirePrograms`, a lab with neither its program nor a cascade program built
+/// is left out with a note on `env.err`. Throws UsageError for an unknown
 /// lab or case, InputError for a manifest that does not parse.
 std::vector<PlannedLab> planLabs(const Options& options, const Environment& env, bool requirePrograms);
 
 /// One job per selected case of `lab`, run by `program`, each in its own folder
 /// <workDir>/<lab>/<case>. A hidden case's job passes --cases <hidden manifest> and
-/// compares with solutions/NN_name/references/CASE.png.
+/// compares with solutions/NN_name/references/CASE.png. With `cascade`, the jobs
+/// are marked as the lab's cascade run and work in <workDir>/cascade/<lab>/<case>.
 std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path& program,
-                              const std::filesystem::path& sourceDir, const std::filesystem::path& workDir);
+                              const std::filesystem::path& sourceDir, const std::filesystem::path& workDir,
+                              bool cascade = false);
 
 /// The limits and backend from the command line.
 RunSettings runSettings(const Options& options);

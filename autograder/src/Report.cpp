@@ -11,6 +11,11 @@ namespace {
 constexpr std::size_t kReasonColumnWidth = 64;
 constexpr int kOutputLinesShown = 12;
 
+// The case column: a cascade run's cases are marked.
+std::string caseLabel(const GradeResult& result) {
+    return result.cascade ? result.caseName + " [cascade]" : result.caseName;
+}
+
 std::string padded(const std::string& text, std::size_t width) {
     return text.size() >= width ? text : text + std::string(width - text.size(), ' ');
 }
@@ -59,9 +64,17 @@ Totals summarize(const std::vector<GradeResult>& results) {
         auto lab = std::find_if(totals.labs.begin(), totals.labs.end(),
                                 [&](const LabTotals& entry) { return entry.lab == result.lab; });
         if (lab == totals.labs.end()) {
-            totals.labs.push_back(LabTotals{result.lab, 0.0, 0.0, {}});
+            totals.labs.push_back(LabTotals{});
+            totals.labs.back().lab = result.lab;
             lab = totals.labs.end() - 1;
         }
+        if (result.cascade) {
+            lab->hasCascade = true;
+            lab->cascadePoints += result.points;
+        } else {
+            lab->ownPoints += result.points;
+        }
+        if (!result.counted) continue;
         lab->points += result.points;
         lab->maxPoints += result.maxPoints;
         lab->statuses.add(result.status);
@@ -90,7 +103,7 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
     std::size_t labWidth = 3, caseWidth = 4, statusWidth = 6, reasonWidth = 5;
     for (const GradeResult& result : results) {
         labWidth = std::max(labWidth, result.lab.size());
-        caseWidth = std::max(caseWidth, result.caseName.size());
+        caseWidth = std::max(caseWidth, caseLabel(result).size());
         statusWidth = std::max(statusWidth, std::string(statusName(result.status)).size());
         reasonWidth = std::max(reasonWidth, std::min(result.reason.size(), kReasonColumnWidth));
     }
@@ -98,10 +111,11 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
         << "  " << padded("error", reasonWidth) << "  points\n";
     out << std::string(labWidth + caseWidth + statusWidth + reasonWidth + 8 + 6, '-') << "\n";
     for (const GradeResult& result : results) {
-        out << padded(result.lab, labWidth) << "  " << padded(result.caseName, caseWidth) << "  "
+        out << padded(result.lab, labWidth) << "  " << padded(caseLabel(result), caseWidth) << "  "
             << padded(statusName(result.status), statusWidth) << "  "
             << padded(shortened(result.reason, kReasonColumnWidth), reasonWidth) << "  "
-            << formatPoints(result.points) << " / " << formatPoints(result.maxPoints) << "\n";
+            << formatPoints(result.points) << " / " << formatPoints(result.maxPoints)
+            << (result.counted ? "" : " (not counted)") << "\n";
         if (result.hasHint()) out << hintLine(result, labWidth + 2) << "\n";
     }
 
@@ -129,8 +143,13 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
 
     out << "\n";
     for (const LabTotals& lab : totals.labs)
+    {
         out << padded(lab.lab, labWidth) << "  " << formatPoints(lab.points) << " / " << formatPoints(lab.maxPoints)
             << " points  (" << lab.statuses.describe() << ")\n";
+        if (lab.hasCascade)
+            out << padded("", labWidth) << "  with your earlier labs " << formatPoints(lab.ownPoints)
+                << ", with their solutions " << formatPoints(lab.cascadePoints) << ": the higher counts\n";
+    }
     if (totals.labs.size() > 1)
         out << padded("total", labWidth) << "  " << formatPoints(totals.points) << " / "
             << formatPoints(totals.maxPoints) << " points  (" << totals.statuses.describe() << ")\n";

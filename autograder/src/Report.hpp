@@ -27,7 +27,11 @@ struct LabTotals {
     std::string lab;
     double points = 0.0;
     double maxPoints = 0.0;
-    StatusCounts statuses;
+    StatusCounts statuses;          // of the counted cases
+    // A lab graded twice (Cascade.hpp): the points of each run; `points` is the higher.
+    bool hasCascade = false;
+    double ownPoints = 0.0;         // with the student's own earlier labs
+    double cascadePoints = 0.0;     // with the earlier labs' solutions
 
     /// True when the lab has cases and every one of them is "not attempted".
     bool nothingAttempted() const;
@@ -40,7 +44,8 @@ struct Totals {
     StatusCounts statuses;
 };
 
-/// Sums points and counts statuses per lab and overall.
+/// Sums points and counts statuses per lab and overall; results that are not
+/// `counted` (the other run of a cascade counts) only add to ownPoints/cascadePoints.
 Totals summarize(const std::vector<GradeResult>& results);
 
 /// True when there is at least one result and every result has `status`.

@@ -27,6 +27,12 @@ std::string testOutput(const GradeResult& result) {
     std::string text = statusName(result.status);
     if (!result.reason.empty()) text += ": " + result.reason;
     text += "\n";
+    if (result.cascade)
+        text += "Rendered with the solutions of the earlier labs this lab uses, so that a mistake there does not "
+                "count twice.\n";
+    if (!result.counted)
+        text += "Not counted: the lab's other run (" + std::string(result.cascade ? "with your own earlier labs" :
+                "with the earlier labs' solutions") + ") has more points.\n";
     if (result.hasHint()) {
         text += "\nHint: this image looks most like the known mistake '" + result.hintMistake + "': " + result.hint + "\n";
         if (!result.hintDocs.empty()) text += "Read " + result.hintDocs + "\n";
@@ -60,13 +66,18 @@ std::string resultsJson(const std::vector<GradeResult>& results, const Totals& t
         }
         ++caseIndex;
         json.beginObject();
-        json.key("score").value(result.points);
-        json.key("max_score").value(result.maxPoints);
+        // A case of a cascade's run that does not count scores 0 of 0, so the
+        // tests add up to the top-level score (Cascade.hpp).
+        json.key("score").value(result.counted ? result.points : 0.0);
+        json.key("max_score").value(result.counted ? result.maxPoints : 0.0);
         json.key("status").value(result.status == GradeStatus::Passed ? "passed" : "failed");
         json.key("name").value(result.fullName());
         json.key("number").value(testNumber(result.lab, labIndex, caseIndex));
         json.key("output").value(testOutput(result));
-        json.key("tags").beginArray().value(result.lab).value(statusName(result.status)).endArray();
+        json.key("tags").beginArray().value(result.lab).value(statusName(result.status));
+        if (result.cascade) json.value("cascade");
+        if (!result.counted) json.value("not counted");
+        json.endArray();
         json.key("visibility").value(result.visibility == Visibility::Hidden ? "after_published" : "visible");
         json.key("extra_data").beginObject();
         json.key("render_seconds").value(result.seconds);

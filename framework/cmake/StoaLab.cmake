@@ -126,6 +126,10 @@ function(stoa_add_lab)
   _stoa_lab_program(${lab} ${lab} ${CMAKE_BINARY_DIR}/bin ${STOA_MAIN_TRACK_NAME}
                     "${STOA_MAIN_TRACK_DIR};${STOA_ROOT_DIR}/shaders" "${objects}")
 
+  if(ARG_USES AND EXISTS ${STOA_SOLUTIONS_DIR} AND NOT STOA_MAIN_TRACK_NAME STREQUAL "solutions")
+    _stoa_cascade_program(${lab} "${ARG_USES}")
+  endif()
+
   if(NOT STOA_BUILD_EXTRA_TRACKS)
     return()
   endif()
@@ -139,59 +143,34 @@ function(stoa_add_lab)
   _stoa_lab_program(${lab} ${lab}-stubs ${CMAKE_BINARY_DIR}/bin/stubs labs
                     "${STOA_LABS_DIR};${STOA_ROOT_DIR}/shaders" "${objects}")
 
-  # One program per planted mistake.
+  # One program per planted mistake, and one per equivalent rewrite (solutions/NN/
+  # equivalents/*.equivalent: the solution written another valid way, which must pass;
+  # the calibration of the compare).
   file(GLOB mistakes ${STOA_SOLUTIONS_DIR}/${lab}/mistakes/*.mistake)
   foreach(mistake_file IN LISTS mistakes)
-    get_filename_component(mistake ${mistake_file} NAME_WE)
-    set(id ${lab}.${mistake})
-    set(overlay ${CMAKE_BINARY_DIR}/mistakes/${id})
-    _stoa_apply_mistake(${mistake_file} ${lab} ${overlay} patched_file)
-    set(objects "")
-    foreach(used IN LISTS ARG_USES)
-      _stoa_student_objects(object ${used} "" ${STOA_SOLUTIONS_DIR})
-      list(APPEND objects ${object})
-    endforeach()
-    # The lab's own student code, with the patched file from the overlay.
-    get_property(lab_cpp GLOBAL PROPERTY STOA_LAB_${lab}_CPP)
-    set(sources "")
-    foreach(file IN LISTS lab_cpp)
-      if(EXISTS ${overlay}/${file})
-        list(APPEND sources ${overlay}/${file})
-      else()
-        list(APPEND sources ${STOA_SOLUTIONS_DIR}/${file})
-      endif()
-    endforeach()
-    if(sources)
-      add_library(stoa_student_${id} OBJECT ${sources})
-      target_link_libraries(stoa_student_${id} PUBLIC stoa)
-      list(APPEND objects stoa_student_${id})
-    endif()
-    _stoa_lab_program(${lab} ${lab}-mistake-${mistake} ${CMAKE_BINARY_DIR}/bin/mistakes/${id} mistake:${mistake}
-                      "${overlay};${STOA_SOLUTIONS_DIR};${STOA_ROOT_DIR}/shaders" "${objects}")
-    set_property(GLOBAL APPEND PROPERTY STOA_MISTAKES ${id})
+    _stoa_variant_program(${lab} ${mistake_file} mistake mistakes "${ARG_USES}")
   endforeach()
-
-  # One program per equivalent rewrite (solutions/NN/equivalents/*.equivalent): the
-  # solution written another valid way, which must pass (calibration of the compare).
   file(GLOB equivalents ${STOA_SOLUTIONS_DIR}/${lab}/equivalents/*.equivalent)
   foreach(equivalent_file IN LISTS equivalents)
-    _stoa_equivalent_program(${lab} ${equivalent_file} "${ARG_USES}")
+    _stoa_variant_program(${lab} ${equivalent_file} equivalent equivalents "${ARG_USES}")
   endforeach()
 endfunction()
 
-# A .equivalent file has the format of a .mistake file, with `why:` (what the
-# rewrite changes and why it is still right) instead of `hint:`, and no `fails:`.
-# Builds build/bin/equivalents/NN_name.NAME/labNN_name.
-function(_stoa_equivalent_program lab equivalent_file uses)
-  get_filename_component(name ${equivalent_file} NAME_WE)
+# A variant of a lab's solution: a .mistake or .equivalent file (same format; an
+# equivalent has `why:` instead of `hint:` and no `fails:`) applied to one solution
+# file. Builds build/bin/<folder>/NN_name.NAME/labNN_name, with the earlier labs'
+# solutions linked in, and records NN_name.NAME in STOA_MISTAKES or STOA_EQUIVALENTS.
+function(_stoa_variant_program lab variant_file kind folder uses)
+  get_filename_component(name ${variant_file} NAME_WE)
   set(id ${lab}.${name})
-  set(overlay ${CMAKE_BINARY_DIR}/equivalents/${id})
-  _stoa_apply_mistake(${equivalent_file} ${lab} ${overlay} patched_file)
+  set(overlay ${CMAKE_BINARY_DIR}/${folder}/${id})
+  _stoa_apply_mistake(${variant_file} ${lab} ${overlay} patched_file)
   set(objects "")
   foreach(used IN LISTS uses)
     _stoa_student_objects(object ${used} "" ${STOA_SOLUTIONS_DIR})
     list(APPEND objects ${object})
   endforeach()
+  # The lab's own student code, with the patched file from the overlay.
   get_property(lab_cpp GLOBAL PROPERTY STOA_LAB_${lab}_CPP)
   set(sources "")
   foreach(file IN LISTS lab_cpp)
@@ -202,13 +181,42 @@ function(_stoa_equivalent_program lab equivalent_file uses)
     endif()
   endforeach()
   if(sources)
-    add_library(stoa_student_equivalent_${id} OBJECT ${sources})
-    target_link_libraries(stoa_student_equivalent_${id} PUBLIC stoa)
-    list(APPEND objects stoa_student_equivalent_${id})
+    add_library(stoa_student_${kind}_${id} OBJECT ${sources})
+    target_link_libraries(stoa_student_${kind}_${id} PUBLIC stoa)
+    list(APPEND objects stoa_student_${kind}_${id})
   endif()
-  _stoa_lab_program(${lab} ${lab}-equivalent-${name} ${CMAKE_BINARY_DIR}/bin/equivalents/${id} equivalent:${name}
+  _stoa_lab_program(${lab} ${lab}-${kind}-${name} ${CMAKE_BINARY_DIR}/bin/${folder}/${id} ${kind}:${name}
                     "${overlay};${STOA_SOLUTIONS_DIR};${STOA_ROOT_DIR}/shaders" "${objects}")
-  set_property(GLOBAL APPEND PROPERTY STOA_EQUIVALENTS ${id})
+  string(TOUPPER ${folder} property)
+  set_property(GLOBAL APPEND PROPERTY STOA_${property} ${id})
+endfunction()
+
+# The cascade program of a lab that uses earlier labs: the main track's code for
+# this lab with the earlier labs' solutions linked in (C++) and found first (GLSL),
+# so that a broken earlier lab does not sink this one. Built where solutions/
+# exists and the main track is not the solutions themselves (a student's or the
+# stubs' tree); build/bin/cascade/labNN_name. The lab's own GLSL is reached
+# through links in build/cascade/NN_name/, so edits show without reconfiguring.
+function(_stoa_cascade_program lab uses)
+  set(overlay ${CMAKE_BINARY_DIR}/cascade/${lab})
+  get_property(files GLOBAL PROPERTY STOA_LAB_${lab}_FILES)
+  file(MAKE_DIRECTORY ${overlay}/${lab})
+  foreach(file IN LISTS files)
+    if(NOT file MATCHES "\\.cpp$")
+      get_filename_component(parent ${overlay}/${lab}/${file} DIRECTORY)
+      file(MAKE_DIRECTORY ${parent})
+      file(CREATE_LINK ${STOA_MAIN_TRACK_DIR}/${lab}/${file} ${overlay}/${lab}/${file} SYMBOLIC)
+    endif()
+  endforeach()
+  set(objects "")
+  foreach(used IN LISTS uses)
+    _stoa_student_objects(object ${used} "-solutions" ${STOA_SOLUTIONS_DIR})
+    list(APPEND objects ${object})
+  endforeach()
+  _stoa_student_objects(object ${lab} "" ${STOA_MAIN_TRACK_DIR})   # the main program's objects
+  list(APPEND objects ${object})
+  _stoa_lab_program(${lab} ${lab}-cascade ${CMAKE_BINARY_DIR}/bin/cascade cascade
+                    "${overlay};${STOA_SOLUTIONS_DIR};${STOA_ROOT_DIR}/shaders" "${objects}")
 endfunction()
 
 # Copies one student file of a submission (STOA_TRACK_DIR) into the staged track.

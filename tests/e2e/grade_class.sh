@@ -4,6 +4,9 @@
 #   bob.zip        the stubs, inside one top folder (bob-main/labs/)    -> 0, every lab "not attempted"
 #   carol.tar.gz   the solutions with a compile error in the first lab  -> that lab (and the labs
 #                  using its code) "does not compile"; the batch goes on
+#   dave/          the solutions with a planted mistake in the first lab that a later lab
+#                  uses: that lab fails, but the later lab gets full marks from its
+#                  cascade run (graded with the earlier lab's solution; Cascade.hpp)
 # Then checks the gradebook rows and each student's results.json.
 #
 #   grade_class.sh <stoa-grade-class> <stoa-grade> <source dir> <work dir>
@@ -39,17 +42,37 @@ echo "this is not C++;" >> "$work/make/carol/labs/$broken"
 broken_lab=${broken%%/*}
 echo "carol's compile error is in $broken"
 
+# dave: the first lab's first planted mistake applied to his copy of the solution.
+make_labs "$work/submissions/dave/labs" solutions
+dave_lab=$(cd "$source/labs" && grep -l "USES" [0-9][0-9]_*/CMakeLists.txt | head -1 | xargs grep -o "USES [0-9][0-9]_[a-z_]*" | head -1 | cut -d' ' -f2)
+dave_user=$(cd "$source/labs" && grep -l "USES" [0-9][0-9]_*/CMakeLists.txt | head -1 | cut -d/ -f1)
+python3 - "$source" "$work/submissions/dave/labs" "$dave_lab" <<'PY'
+import glob, os, re, sys
+source, labs, lab = sys.argv[1:4]
+mistake = sorted(glob.glob(os.path.join(source, "solutions", lab, "mistakes", "*.mistake")))[0]
+text = open(mistake).read()
+name = re.search(r"^file:\s*(\S+)", text, re.M).group(1)
+find = text.split("--- find\n", 1)[1].split("--- replace\n", 1)[0]
+replace = text.split("--- replace\n", 1)[1].split("--- end", 1)[0]
+path = os.path.join(labs, lab, name)
+code = open(path).read()
+assert code.count(find) == 1, f"{mistake}: the find text is not in {path} once"
+open(path, "w").write(code.replace(find, replace))
+print(f"dave's {lab} has the mistake {os.path.basename(mistake)}")
+PY
+
 "$grade_class" "$work/submissions" --out "$work/out" --jobs 2
 
-python3 - "$work/out" "$broken_lab" "$("$grade" --help | grep -c -- --html || true)" <<'PY'
+python3 - "$work/out" "$broken_lab" "$("$grade" --help | grep -c -- --html || true)" "$dave_lab" "$dave_user" <<'PY'
 import csv, json, os, sys
 out, broken_lab, has_html = sys.argv[1], sys.argv[2], sys.argv[3] != "0"
+dave_lab, dave_user = sys.argv[4], sys.argv[5]
 rows = {row["student"]: row for row in csv.DictReader(open(os.path.join(out, "gradebook.csv")))}
 failures = []
 def check(condition, message):
     if not condition:
         failures.append(message)
-check(sorted(rows) == ["alice", "bob", "carol"], f"students in the gradebook: {sorted(rows)}")
+check(sorted(rows) == ["alice", "bob", "carol", "dave"], f"students in the gradebook: {sorted(rows)}")
 labs = [c for c in next(csv.reader(open(os.path.join(out, "gradebook.csv"))))[1:] if c[:2].isdigit()]
 check(len(labs) >= 1, "no lab columns")
 alice, bob, carol = rows["alice"], rows["bob"], rows["carol"]
@@ -61,7 +84,23 @@ for lab in labs:
 check(float(carol[broken_lab]) == 0, f"carol's {broken_lab}: {carol[broken_lab]}")
 check(carol["status"] in ("build failed", "partly built"), f"carol's status: {carol['status']}")
 check(f"{broken_lab}: does not compile" in carol["notes"] and "error" in carol["notes"], f"carol's notes: {carol['notes']}")
-check(alice["max"] == bob["max"] == carol["max"], "the students' max differ")
+check(alice["max"] == bob["max"] == carol["max"] == rows["dave"]["max"], "the students' max differ")
+# Cascades: dave's mistake costs him in its own lab, not in the lab that uses it.
+dave = rows["dave"]
+check(float(dave[dave_lab]) < float(alice[dave_lab]), f"dave's {dave_lab} should lose points: {dave[dave_lab]}")
+check(dave[dave_user] == alice[dave_user], f"dave's {dave_user}: {dave[dave_user]}, expected {alice[dave_user]} from its cascade run")
+dave_results = json.load(open(os.path.join(out, "dave", "results.json")))
+own = [t for t in dave_results["tests"] if t["name"].startswith(dave_user + "/") and "cascade" not in t["tags"]]
+cascade = [t for t in dave_results["tests"] if t["name"].startswith(dave_user + "/") and "cascade" in t["tags"]]
+check(len(cascade) > 0 and len(cascade) == len(own), f"dave's {dave_user}: {len(own)} own and {len(cascade)} cascade tests")
+check(any(t["status"] == "failed" for t in own), f"dave's own {dave_user} run should fail a case (the mistake shows through)")
+check(all(t["status"] == "passed" and t["score"] == t["max_score"] > 0 for t in cascade),
+      f"dave's cascade run of {dave_user} should pass and count: {[(t['name'], t['status'], t['score']) for t in cascade]}")
+check(all("not counted" in t["tags"] and t["max_score"] == 0 for t in own), "dave's own run should be marked not counted")
+# Alice's lab uses solutions on both runs: the own run counts on the tie.
+alice_results = json.load(open(os.path.join(out, "alice", "results.json")))
+check(all("not counted" in t["tags"] for t in alice_results["tests"] if "cascade" in t["tags"]),
+      "alice's cascade run should not count (a tie)")
 for student in rows:
     results = json.load(open(os.path.join(out, student, "results.json")))
     total = sum(test["score"] for test in results["tests"])

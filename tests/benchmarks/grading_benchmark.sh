@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# tests/benchmarks/grading_benchmark.sh [BUILD_DIR] [RUNS] [STUDENTS]
+# What grading costs beyond rendering, and how batch grading scales.
+#
+# 1. Overhead: every public case of every built lab rendered by its lab program
+#    directly, one after the other (the raw render time, summed), against
+#    `stoa-grade --jobs 1` grading the same cases (child processes, limits,
+#    reference guard, compare, FLIP where needed, reports). Target: at most 1.5x.
+#    Then `stoa-grade --jobs 2`, and its speedup over one job.
+# 2. Batch scaling (STUDENTS > 0, default 0 because it compiles every student):
+#    stoa-grade-class on STUDENTS copies of the solutions with --jobs 1 and
+#    --jobs $(nproc); prints the wall times and the speedup.
+# Medians of RUNS runs (default 5). The machines are shared and noisy: read the
+# ratios, which come from runs taken side by side, not the absolute times.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=${1:-$root/build-solutions}
+runs=${2:-5}
+students=${3:-0}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+[ -x "$build/bin/stoa-grade" ] || { echo "grading_benchmark: no $build/bin/stoa-grade; build first" >&2; exit 1; }
+
+median() { sort -n | awk '{ a[NR] = $1 } END { if (NR % 2) print a[(NR + 1) / 2]; else print (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
+now() { date +%s.%N; }
+elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f\n", b - a }'; }
+report() { printf '%-64s %8.3f s  (median of %d)\n' "$1" "$2" "$3"; }
+
+labs="" cases=""
+for manifest in "$root"/labs/[0-9][0-9]_*/cases.ini; do
+  lab=$(basename "$(dirname "$manifest")")
+  [ -x "$build/bin/lab$lab" ] || continue
+  labs="$labs $lab"
+  cases="$cases $(sed -n 's/^\[case \(.*\)\]$/\1/p' "$manifest" | tr '\n' ' ')"
+done
+[ -n "$labs" ] || { echo "grading_benchmark: no lab program in $build/bin" >&2; exit 1; }
+count=$(echo $cases | wc -w)
+grade_args=()
+for lab in $labs; do grade_args+=(--lab "$lab"); done
+for name in $cases; do grade_args+=(--case "$name"); done
+echo "labs:$labs; $count public cases"
+
+raw_all="" one_all="" two_all=""
+for _ in $(seq "$runs"); do
+  start=$(now)
+  for lab in $labs; do
+    for name in $(sed -n 's/^\[case \(.*\)\]$/\1/p' "$root/labs/$lab/cases.ini"); do
+      "$build/bin/lab$lab" --render "$name" --output "$work/raw.png" >/dev/null 2>&1
+    done
+  done
+  raw_all="$raw_all $(elapsed "$start" "$(now)")"
+  start=$(now)
+  "$build/bin/stoa-grade" "${grade_args[@]}" --jobs 1 --work-dir "$work/one" >/dev/null 2>&1 || true
+  one_all="$one_all $(elapsed "$start" "$(now)")"
+  start=$(now)
+  "$build/bin/stoa-grade" "${grade_args[@]}" --jobs 2 --work-dir "$work/two" >/dev/null 2>&1 || true
+  two_all="$two_all $(elapsed "$start" "$(now)")"
+done
+raw=$(echo $raw_all | tr ' ' '\n' | median)
+one=$(echo $one_all | tr ' ' '\n' | median)
+two=$(echo $two_all | tr ' ' '\n' | median)
+report "raw renders of the $count public cases, one after the other" "$raw" "$runs"
+report "stoa-grade --jobs 1, the same cases" "$one" "$runs"
+report "stoa-grade --jobs 2, the same cases" "$two" "$runs"
+awk -v r="$raw" -v o="$one" -v t="$two" 'BEGIN {
+  printf "grading / raw renders (--jobs 1): %.2fx  (target <= 1.5x)\n", o / r
+  printf "speedup of --jobs 2 over --jobs 1: %.2fx\n", o / t }'
+
+if [ "$students" -gt 0 ]; then
+  [ -x "$build/bin/stoa-grade-class" ] || { echo "grading_benchmark: no stoa-grade-class in $build/bin" >&2; exit 1; }
+  mkdir -p "$work/class"
+  for i in $(seq "$students"); do
+    dest="$work/class/student$i/labs"
+    mkdir -p "$dest"
+    cp -r "$root"/labs/. "$dest"/
+    for lab_dir in "$root"/solutions/[0-9][0-9]_*/; do
+      lab=$(basename "$lab_dir")
+      for file in "$lab_dir"*; do
+        if [ -f "$file" ] && [ -f "$dest/$lab/$(basename "$file")" ]; then cp "$file" "$dest/$lab/"; fi
+      done
+    done
+  done
+  cores=$(nproc)
+  for jobs in 1 "$cores"; do
+    start=$(now)
+    "$build/bin/stoa-grade-class" "$work/class" --out "$work/class-out-$jobs" --jobs "$jobs" >/dev/null 2>&1
+    eval "class_$jobs=$(elapsed "$start" "$(now)")"
+    report "stoa-grade-class, $students students, --jobs $jobs" "$(eval echo \$class_$jobs)" 1
+  done
+  awk -v a="$class_1" -v b="$(eval echo \$class_$cores)" -v c="$cores" \
+    'BEGIN { printf "batch speedup with %d jobs: %.2fx\n", c, a / b }'
+fi
