@@ -1,5 +1,7 @@
 #include "Escape.hpp"
 
+#include "Utf8.hpp"
+
 #include <cstdint>
 
 namespace stoa::grader {
@@ -8,39 +10,15 @@ namespace {
 
 const char* const kReplacement = "\xEF\xBF\xBD";   // U+FFFD in UTF-8
 
-// The length of the valid UTF-8 sequence at text[i] whose code point XML 1.0
-// allows, or 0 (RFC 3629: no overlong forms, no surrogates, at most U+10FFFF).
+// The length of the well-formed UTF-8 sequence at text[i] whose code point
+// XML 1.0 allows, or 0.
 std::size_t validSequence(const std::string& text, std::size_t i) {
-    auto byte = [&](std::size_t k) { return static_cast<std::uint8_t>(text[k]); };
-    std::uint8_t lead = byte(i);
-    if (lead < 0x80) {
-        bool allowed = lead >= 0x20 || lead == '\t' || lead == '\n' || lead == '\r';
-        return allowed && lead != 0x7F ? 1 : 0;
-    }
-    std::size_t length = 0;
     std::uint32_t codePoint = 0;
-    if (lead >= 0xC2 && lead <= 0xDF) {
-        length = 2;
-        codePoint = lead & 0x1F;
-    } else if (lead >= 0xE0 && lead <= 0xEF) {
-        length = 3;
-        codePoint = lead & 0x0F;
-    } else if (lead >= 0xF0 && lead <= 0xF4) {
-        length = 4;
-        codePoint = lead & 0x07;
-    } else {
-        return 0;
-    }
-    if (i + length > text.size()) return 0;
-    for (std::size_t k = 1; k < length; ++k) {
-        if ((byte(i + k) & 0xC0) != 0x80) return 0;
-        codePoint = (codePoint << 6) | (byte(i + k) & 0x3F);
-    }
-    static const std::uint32_t smallest[] = {0, 0, 0x80, 0x800, 0x10000};
-    if (codePoint < smallest[length] || codePoint > 0x10FFFF) return 0;
-    if (codePoint >= 0xD800 && codePoint <= 0xDFFF) return 0;
+    std::size_t length = utf8SequenceLength(text, i, &codePoint);
+    if (length == 0) return 0;
+    if (codePoint < 0x20) return codePoint == '\t' || codePoint == '\n' || codePoint == '\r' ? 1 : 0;
+    if (codePoint == 0x7F || (codePoint >= 0x80 && codePoint <= 0x9F)) return 0;   // DEL, C1 controls
     if (codePoint == 0xFFFE || codePoint == 0xFFFF) return 0;
-    if (codePoint >= 0x80 && codePoint <= 0x9F) return 0;   // C1 controls: legal but never meant
     return length;
 }
 

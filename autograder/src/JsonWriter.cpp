@@ -1,5 +1,7 @@
 #include "JsonWriter.hpp"
 
+#include "Utf8.hpp"
+
 #include <stoa/core/Assert.hpp>
 
 #include <cmath>
@@ -8,40 +10,6 @@
 #include <cstring>
 
 namespace stoa::grader {
-
-namespace {
-
-// Length of the valid UTF-8 sequence starting at text[i], or 0 when invalid
-// (overlong forms, surrogates and code points past U+10FFFF are invalid).
-std::size_t utf8SequenceLength(std::string_view text, std::size_t i) {
-    auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-    unsigned char lead = byte(i);
-    std::size_t length;
-    unsigned int codePoint;
-    if (lead < 0x80) return 1;
-    if (lead >= 0xC2 && lead <= 0xDF) {
-        length = 2;
-        codePoint = lead & 0x1F;
-    } else if (lead >= 0xE0 && lead <= 0xEF) {
-        length = 3;
-        codePoint = lead & 0x0F;
-    } else if (lead >= 0xF0 && lead <= 0xF4) {
-        length = 4;
-        codePoint = lead & 0x07;
-    } else {
-        return 0;
-    }
-    if (i + length > text.size()) return 0;
-    for (std::size_t k = 1; k < length; ++k) {
-        if ((byte(i + k) & 0xC0) != 0x80) return 0;
-        codePoint = (codePoint << 6) | (byte(i + k) & 0x3F);
-    }
-    if (length == 3 && (codePoint < 0x800 || (codePoint >= 0xD800 && codePoint <= 0xDFFF))) return 0;
-    if (length == 4 && (codePoint < 0x10000 || codePoint > 0x10FFFF)) return 0;
-    return length;
-}
-
-} // namespace
 
 std::string jsonQuote(std::string_view text) {
     std::string quoted;
