@@ -35,9 +35,13 @@ struct LabBuildInfo {
 
 int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv);
 
+/// This program's build info. Not written by hand: the build generates one
+/// definition per lab program (framework/cmake/StoaLab.cmake), so that a lab's
+/// app sources compile once for all its programs (solution, stubs, mistakes, ...).
+LabBuildInfo labBuildInfo();
+
 enum ExitCode { kExitOk = 0, kExitError = 1, kExitUsage = 2, kExitNotAttempted = 3 };
 
 } // namespace stoa
 
-#define STOA_LAB_BUILD_INFO \
-    ::stoa::LabBuildInfo { STOA_LAB_NAME, STOA_LAB_TRACK, STOA_LAB_DIR, STOA_LAB_SHADER_PATH }
+#define STOA_LAB_BUILD_INFO ::stoa::labBuildInfo()
