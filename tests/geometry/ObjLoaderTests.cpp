@@ -243,6 +243,8 @@ TEST_CASE("loadObj resolves texture paths relative to the MTL file's folder", "[
     folder.write("materials/wood.mtl", "newmtl wood\n"
                                        "map_Kd ../textures/wood.png\n"
                                        "map_Ks maps\\wood_specular.png\n");
+    folder.write("textures/wood.png", "");   // the loader checks that maps exist, never reads them
+    folder.write("materials/maps/wood_specular.png", "");
     const fs::path path = folder.write("table.obj", "mtllib materials/wood.mtl\n"
                                                     "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
                                                     "usemtl wood\n"

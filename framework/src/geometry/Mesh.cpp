@@ -27,6 +27,7 @@ namespace {
 
 bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 bool isFinite(const glm::vec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+bool isFinite(const glm::vec4& v) { return isFinite(glm::vec3(v)) && std::isfinite(v.w); }
 
 template <typename Vector>
 std::string describe(const Vector& v) {
@@ -60,6 +61,7 @@ void Mesh::validate(const std::string& source) const {
         if (!isFinite(vertex.position)) reject("position", describe(vertex.position));
         if (!isFinite(vertex.normal)) reject("normal", describe(vertex.normal));
         if (!isFinite(vertex.uv)) reject("uv", describe(vertex.uv));
+        if (!isFinite(vertex.tangent)) reject("tangent", describe(vertex.tangent));
     }
 }
 

@@ -126,7 +126,74 @@ struct MtlEntry {
     fs::path folder;  // absolute folder of the MTL file, for its texture paths
     std::optional<glm::vec3> ambient, diffuse, specular;
     std::optional<float> shininess;
+    std::string diffuseMap, specularMap, normalMap, heightMap;  // absolute paths; empty = none
+    float bumpScale = 1.0f;
 };
+
+/// A texture name as written in an MTL file, made an absolute path relative
+/// to the MTL file's folder (backslashes, from files written on Windows, become slashes).
+fs::path resolveTexture(std::string name, const fs::path& folder) {
+    for (char& c : name) {
+        if (c == '\\') c = '/';
+    }
+    return (folder / name).lexically_normal();
+}
+
+/// The texture named by a map statement ("map_Kd -o 0.5 0.5 wood.png") and its
+/// -bm option. The options are those of the MTL specification; each is checked
+/// for its count of values, so that a value is never taken for the file name.
+struct TextureStatement {
+    fs::path path;           // absolute; the file exists
+    float bumpMultiplier = 1.0f;
+};
+
+TextureStatement textureStatement(const std::vector<std::string_view>& words, const fs::path& folder,
+                                  const std::string& file, int line) {
+    // Option -> (fewest, most) values it takes.
+    static const std::map<std::string_view, std::pair<int, int>> options = {
+        {"-blendu", {1, 1}}, {"-blendv", {1, 1}}, {"-bm", {1, 1}},      {"-boost", {1, 1}}, {"-cc", {1, 1}},
+        {"-clamp", {1, 1}},  {"-imfchan", {1, 1}}, {"-mm", {2, 2}},     {"-o", {1, 3}},     {"-s", {1, 3}},
+        {"-t", {1, 3}},      {"-texres", {1, 1}},  {"-type", {1, 1}}};
+    auto isNumber = [](std::string_view word) {
+        double ignored = 0.0;
+        if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+        const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), ignored);
+        return error == std::errc() && end == word.data() + word.size();
+    };
+    TextureStatement statement;
+    std::size_t i = 1;
+    while (i < words.size() && words[i].size() > 1 && words[i].front() == '-' && !isNumber(words[i])) {
+        const auto option = options.find(words[i]);
+        if (option == options.end()) {
+            throw InputError(file, line, std::string(words[0]) + ": unknown texture option '" + std::string(words[i]) +
+                                             "' (expected one of -blendu -blendv -bm -boost -cc -clamp -imfchan "
+                                             "-mm -o -s -t -texres -type, then the file name)");
+        }
+        const auto [fewest, most] = option->second;
+        std::size_t values = 0;
+        while (static_cast<int>(values) < most && i + 1 + values < words.size() &&
+               (static_cast<int>(values) < fewest || isNumber(words[i + 1 + values]))) {
+            ++values;
+        }
+        if (static_cast<int>(values) < fewest) {
+            throw InputError(file, line, std::string(words[0]) + ": the option " + std::string(words[i]) + " needs " +
+                                             std::to_string(fewest) + (fewest == 1 ? " value" : " values"));
+        }
+        if (words[i] == "-bm") statement.bumpMultiplier = finiteNumber(words[i + 1], file, line);
+        i += 1 + values;
+    }
+    if (i == words.size()) throw InputError(file, line, std::string(words[0]) + " needs the name of a texture file");
+    std::string name(words[i]);
+    for (++i; i < words.size(); ++i) name += " " + std::string(words[i]);  // a name with spaces
+    statement.path = resolveTexture(name, folder);
+    std::error_code error;
+    if (!fs::is_regular_file(statement.path, error)) {
+        throw InputError(file, line, std::string(words[0]) + " names '" + name + "', but " + statement.path.string() +
+                                         " does not exist or is not a file (texture paths are relative to the "
+                                         "MTL file's folder)");
+    }
+    return statement;
+}
 
 /// An MTL colour: "Kd r g b", or "Kd r" meaning grey (the MTL spec's
 /// shorthand, which tinyobjloader reads as (r, 0, 0)). The "spectral" and
@@ -154,14 +221,27 @@ std::vector<MtlEntry> scanMtl(const fs::path& mtlPath, const std::string& text) 
             std::string name = start < raw.size() ? raw.substr(start) : std::string();
             name.erase(name.find_last_not_of(" \t") + 1);
             if (name.empty()) throw InputError(file, line, "newmtl needs a material name");
-            entries.push_back({name, folder, {}, {}, {}, {}});
+            entries.push_back({name, folder, {}, {}, {}, {}, {}, {}, {}, {}, 1.0f});
+            return;
+        }
+        MtlEntry* entry = entries.empty() ? nullptr : &entries.back();
+        if (key == "map_Kd" || key == "map_Ks" || key == "norm" || key == "map_bump" || key == "map_Bump" ||
+            key == "bump") {
+            const TextureStatement texture = textureStatement(words, folder, file, line);
+            if (!entry) return;  // before any newmtl: tinyobjloader ignores it too
+            if (key == "map_Kd") entry->diffuseMap = texture.path.string();
+            if (key == "map_Ks") entry->specularMap = texture.path.string();
+            if (key == "norm") entry->normalMap = texture.path.string();
+            if (key == "map_bump" || key == "map_Bump" || key == "bump") {
+                entry->heightMap = texture.path.string();
+                entry->bumpScale = texture.bumpMultiplier;
+            }
             return;
         }
         if (key != "Ka" && key != "Kd" && key != "Ks" && key != "Ke" && key != "Tf" && key != "Ns" && key != "Ni" &&
             key != "d" && key != "Tr") {
-            return;  // texture maps, illum and unknown statements: tinyobjloader's business
+            return;  // other maps, illum and unknown statements: tinyobjloader's business (and unused)
         }
-        MtlEntry* entry = entries.empty() ? nullptr : &entries.back();
         if (key == "Ka" || key == "Kd" || key == "Ks" || key == "Ke" || key == "Tf") {
             const glm::vec3 colour = mtlColour(words, file, line);
             if (entry && key == "Ka") entry->ambient = colour;
@@ -300,30 +380,23 @@ InputError tinyobjError(const std::string& file, std::string message) {
     return InputError(file, line, "tinyobjloader rejected the file: " + message);
 }
 
-std::string resolveTexture(const std::string& name, const fs::path& folder) {
-    if (name.empty()) return {};
-    std::string portable = name;
-    for (char& c : portable) {
-        if (c == '\\') c = '/';  // paths written on Windows
-    }
-    return (folder / portable).lexically_normal().string();
-}
-
 Material makeMaterial(const tinyobj::material_t& parsed, const std::vector<MtlEntry>& entries) {
     Material material;
     material.name = parsed.name;
-    fs::path folder = fs::current_path();
+    // The first MTL entry of that name, as tinyobjloader keeps the first too.
     for (const MtlEntry& entry : entries) {
         if (entry.name != parsed.name) continue;
-        folder = entry.folder;
         if (entry.ambient) material.ambient = *entry.ambient;
         if (entry.diffuse) material.diffuse = *entry.diffuse;
         if (entry.specular) material.specular = *entry.specular;
         if (entry.shininess) material.shininess = *entry.shininess;
+        material.diffuseMap = entry.diffuseMap;
+        material.specularMap = entry.specularMap;
+        material.normalMap = entry.normalMap;
+        material.heightMap = entry.heightMap;
+        material.bumpScale = entry.bumpScale;
         break;
     }
-    material.diffuseMap = resolveTexture(parsed.diffuse_texname, folder);
-    material.specularMap = resolveTexture(parsed.specular_texname, folder);
     return material;
 }
 

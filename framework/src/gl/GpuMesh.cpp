@@ -13,6 +13,7 @@ GpuMesh::GpuMesh(const Mesh& mesh) : m_indexCount(mesh.indices.size()), m_vertex
     m_vertexArray.attribute(kPositionLocation, m_vertices, 3, GL_FLOAT, sizeof(Vertex), offsetof(Vertex, position));
     m_vertexArray.attribute(kNormalLocation, m_vertices, 3, GL_FLOAT, sizeof(Vertex), offsetof(Vertex, normal));
     m_vertexArray.attribute(kUvLocation, m_vertices, 2, GL_FLOAT, sizeof(Vertex), offsetof(Vertex, uv));
+    m_vertexArray.attribute(kTangentLocation, m_vertices, 4, GL_FLOAT, sizeof(Vertex), offsetof(Vertex, tangent));
     if (m_indexCount > 0) {
         m_indices.upload(mesh.indices);
         m_vertexArray.elementBuffer(m_indices);

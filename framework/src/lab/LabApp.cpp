@@ -7,7 +7,11 @@
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/gl/Texture2D.hpp>
+#include <stoa/core/Paths.hpp>
 #include <stoa/image/Image.hpp>
+#include <stoa/image/ImageCompare.hpp>
+#include <stoa/render/TextureOverlay.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 
@@ -31,6 +35,7 @@ struct Options {
     std::optional<HeadlessBackend> backend;
     std::string windowCase;      // window
     std::string screenshot;
+    int view = 0;                // --view: 0 live, 1 yours, 2 reference, 3 difference (the 'g' key's views)
     std::string casesFile;       // --cases: read the cases from this manifest instead of the lab's
 };
 
@@ -41,7 +46,7 @@ struct ShaderNotImplemented : std::runtime_error {
 
 void printUsage(const LabBuildInfo& info, std::FILE* to) {
     std::fprintf(to,
-                 "usage: lab%s [--case NAME] [--screenshot FILE]\n"
+                 "usage: lab%s [--case NAME] [--view live|yours|reference|difference] [--screenshot FILE]\n"
                  "       lab%s --render NAME --output FILE.png [--backend osmesa|egl]\n"
                  "       lab%s --list | --info | --help\n"
                  "Any of them takes --cases FILE.ini: the cases from that manifest instead of the lab's\n"
@@ -67,18 +72,27 @@ Options parseOptions(int argc, char** argv) {
         else if (arg == "--backend") options.backend = parseHeadlessBackend(value(i));
         else if (arg == "--case") options.windowCase = value(i);
         else if (arg == "--screenshot") options.screenshot = value(i);
+        else if (arg == "--view") {
+            const std::string name = value(i);
+            const char* const views[] = {"live", "yours", "reference", "difference"};
+            options.view = -1;
+            for (int v = 0; v < 4; ++v)
+                if (name == views[v]) options.view = v;
+            if (options.view < 0)
+                throw InputError("", 0, "--view takes live, yours, reference or difference, not '" + name + "'");
+        }
         else if (arg == "--cases") options.casesFile = value(i);
         else
             throw InputError("", 0, "unknown argument '" + arg +
-                                        "' (valid: --case, --screenshot, --render, --output, --backend, --cases, "
+                                        "' (valid: --case, --view, --screenshot, --render, --output, --backend, --cases, "
                                         "--list, --info, --help)");
     }
     if (!options.renderCase.empty() && options.output.empty())
         throw InputError("", 0, "--render needs --output FILE.png");
     if (options.renderCase.empty() && (!options.output.empty() || options.backend))
         throw InputError("", 0, "--output and --backend go with --render");
-    if (!options.renderCase.empty() && (!options.windowCase.empty() || !options.screenshot.empty()))
-        throw InputError("", 0, "--case and --screenshot are for the window; --render renders headless");
+    if (!options.renderCase.empty() && (!options.windowCase.empty() || !options.screenshot.empty() || options.view))
+        throw InputError("", 0, "--case, --view and --screenshot are for the window; --render renders headless");
     return options;
 }
 
@@ -122,6 +136,14 @@ int renderHeadless(Lab& lab, const LabBuildInfo& info, const LabManifest& manife
     return kExitOk;
 }
 
+// A picture shown at about its size: no mipmaps, clamped.
+TextureOptions pictureOptions() {
+    TextureOptions options;
+    options.mipmaps = false;
+    options.wrap = GL_CLAMP_TO_EDGE;
+    return options;
+}
+
 // The interactive app: the lab in a window with the cameras, case jumps and reload.
 class LabWindow : public WindowHandler {
 public:
@@ -132,6 +154,15 @@ public:
 
     void display(glm::ivec2 size) override {
         reloadChangedShaders();
+        if (m_view != View::Live) {
+            showPicture(size);
+        } else {
+            renderLive(size);
+        }
+        if (!m_screenshot.empty() && ++m_framesDrawn == 2) saveScreenshot(size);
+    }
+
+    void renderLive(glm::ivec2 size) {
         try {
             m_lab.render(size);
             throwIfShaderStubs(m_resources);
@@ -141,7 +172,6 @@ public:
         } catch (const ShaderNotImplemented& stub) {
             showProblem(std::string("not implemented: ") + stub.what());
         }
-        if (!m_screenshot.empty() && ++m_framesDrawn == 2) saveScreenshot(size);
     }
 
     void update(float seconds, const InputState& input) override { m_lab.activeCamera().update(input, seconds); }
@@ -160,16 +190,22 @@ public:
         } else if (key >= '1' && key <= '9') {
             const std::size_t index = static_cast<std::size_t>(key - '1');
             if (index < m_manifest.cases.size()) {
+                m_caseIndex = index;
+                m_view = View::Live;
                 runStudentCode([&] { m_lab.loadCase(m_manifest.cases[index]); });
                 std::printf("case %zu: %s -- %s\n", index + 1, m_manifest.cases[index].name.c_str(),
                             m_manifest.cases[index].description.c_str());
             }
         } else if (key == '\t') {
             runStudentCode([&] { m_lab.toggleCamera(); });
+        } else if (key == 'g') {
+            cycleView();
         } else if (key == 'h') {
             printHelp();
-        } else if (!m_lab.keyPressed(key)) {
-            // Unused keys are fine: the cameras read W/A/S/D/C/Space as held keys.
+        } else {
+            // The lab's own keys run student code too (a stub may throw). Unused keys
+            // are fine: the cameras read W/A/S/D/C/Space as held keys.
+            runStudentCode([&] { m_lab.keyPressed(key); });
         }
         std::fflush(stdout);
     }
@@ -181,6 +217,7 @@ public:
                     "  W A S D      walk (first person); Space up, C or Ctrl down, Shift faster\n"
                     "  Tab          switch orbit / first-person camera\n"
                     "  1..9         jump to a graded case's view\n"
+                    "  g            the case as the grader sees it: yours, the reference, the difference, back\n"
                     "  h            this help;  Esc quit\n"
                     "  Shaders reload by themselves when you save them.\n",
                     m_info.name, m_info.track);
@@ -191,7 +228,100 @@ public:
 
     int exitCode() const { return m_exitCode; }
 
+    /// The case the window shows (and 'g' grades): the first one, or the one --case named.
+    void setCase(std::size_t index) { m_caseIndex = index; }
+    /// The 'g' key: live -> yours -> reference -> difference -> live.
+    void nextView() { cycleView(); }
+
 private:
+    // What the window shows: the live scene, or one of the pictures of the
+    // current case that the grader compares (rendered at the case's size).
+    enum class View { Live, Yours, Reference, Difference };
+
+    void cycleView() {
+        if (m_view == View::Live) {
+            if (!gradeCurrentCase()) return;
+            m_view = View::Yours;
+        } else if (m_view == View::Yours) {
+            m_view = m_reference.id() != 0 ? View::Reference : View::Live;
+        } else if (m_view == View::Reference) {
+            m_view = View::Difference;
+        } else {
+            m_view = View::Live;
+        }
+        static const char* const names[] = {"live", "yours", "reference", "difference"};
+        std::printf("view: %s\n", names[static_cast<int>(m_view)]);
+        m_window.setTitle(std::string("Stoa lab ") + m_info.name + " -- " + names[static_cast<int>(m_view)] +
+                          (m_view == View::Live ? "" : " -- case " + m_manifest.cases[m_caseIndex].name));
+    }
+
+    // Renders the current case at its size from its own camera (what
+    // `--render` writes), compares it with its reference as stoa-grade does, and
+    // keeps the three pictures as textures. False when the case cannot render.
+    bool gradeCurrentCase() {
+        const CaseSpec& spec = m_manifest.cases[m_caseIndex];
+        Image yours;
+        try {
+            m_lab.loadCase(spec);
+            Framebuffer target(spec.width, spec.height, FramebufferOptions{});
+            target.bind();
+            m_lab.render({spec.width, spec.height});
+            throwIfShaderStubs(m_resources);
+            yours = target.readColor();
+            Framebuffer::bindDefault();
+        } catch (const NotImplemented& stub) {
+            Framebuffer::bindDefault();
+            showProblem("not implemented: " + stub.function());
+            return false;
+        } catch (const ShaderNotImplemented& stub) {
+            Framebuffer::bindDefault();
+            showProblem(std::string("not implemented: ") + stub.what());
+            return false;
+        }
+        m_yours = Texture2D::fromImage(yours, pictureOptions());
+        m_reference = Texture2D();
+        m_difference = Texture2D();
+        const std::filesystem::path referencePath =
+            paths::sourceDir() / "autograder" / "references" / m_info.name / (spec.name + ".png");
+        std::printf("case %s: rendered at %dx%d from its own camera, as the grader does\n", spec.name.c_str(),
+                    spec.width, spec.height);
+        try {
+            Image reference = Image::load(referencePath);
+            CompareResult result = compareImages(yours, reference, spec.compare);
+            std::printf("  %s: %s\n", result.passed ? "passes" : "fails", result.summary.c_str());
+            m_reference = Texture2D::fromImage(reference, pictureOptions());
+            if (result.sameSize)
+                m_difference = Texture2D::fromImage(differenceHeatMap(yours, reference, result, spec.compare),
+                                                    pictureOptions());
+        } catch (const InputError& error) {
+            std::printf("  no reference to compare with: %s\n", error.what());
+        }
+        std::fflush(stdout);
+        return true;
+    }
+
+    // The picture of the current view, as large as fits the window at its aspect ratio.
+    void showPicture(glm::ivec2 size) {
+        if (!m_imageProgram) {
+            m_imageProgram = std::make_unique<Program>(
+                Program::fromFiles("basic/image.vert", "basic/image.frag", m_resources.shaderSearchPath()));
+            m_overlay = std::make_unique<TextureOverlay>();
+        }
+        const Texture2D& picture =
+            m_view == View::Yours ? m_yours : m_view == View::Reference ? m_reference : m_difference;
+        glViewport(0, 0, size.x, size.y);
+        glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if (picture.id() == 0) return;   // a difference of pictures of different sizes
+        const float scale = std::min(static_cast<float>(size.x) / picture.width(),
+                                     static_cast<float>(size.y) / picture.height());
+        const glm::ivec2 shown(static_cast<int>(picture.width() * scale), static_cast<int>(picture.height() * scale));
+        picture.bind(0);
+        m_imageProgram->use();
+        m_imageProgram->set("uImage", 0);
+        m_overlay->draw(*m_imageProgram, {(size.x - shown.x) / 2, (size.y - shown.y) / 2, shown.x, shown.y});
+    }
+
     template <typename Function>
     void runStudentCode(Function&& function) {
         try {
@@ -250,6 +380,11 @@ private:
     std::chrono::steady_clock::time_point m_lastReloadCheck = std::chrono::steady_clock::now();
     int m_framesDrawn = 0;
     int m_exitCode = kExitOk;
+    std::size_t m_caseIndex = 0;
+    View m_view = View::Live;
+    Texture2D m_yours, m_reference, m_difference;
+    std::unique_ptr<Program> m_imageProgram;
+    std::unique_ptr<TextureOverlay> m_overlay;
 };
 
 int runWindow(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, const Options& options, int argc,
@@ -266,6 +401,7 @@ int runWindow(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, c
     LabResources resources(splitSearchPath(info.shaderPath));
     lab.initialize(resources);
     LabWindow handler(lab, window, info, manifest, resources, options.screenshot);
+    handler.setCase(static_cast<std::size_t>(&first - manifest.cases.data()));
     try {
         lab.loadCase(first);
         first.requireAllKeysUsed();
@@ -274,6 +410,7 @@ int runWindow(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, c
         if (!options.screenshot.empty()) return kExitNotAttempted;
     }
     if (options.screenshot.empty()) handler.printHelp();
+    for (int view = 0; view < options.view; ++view) handler.nextView();
     window.run(handler);
     return handler.exitCode();
 }

@@ -19,6 +19,9 @@ struct Material {
     float shininess = 32.0f;   // n, the Blinn-Phong exponent (MTL: Ns)
     std::string diffuseMap;    // absolute path of the diffuse texture (MTL: map_Kd); empty = none
     std::string specularMap;   // absolute path of the specular texture (MTL: map_Ks); empty = none
+    std::string normalMap;     // absolute path of a tangent-space normal map (MTL: norm); empty = none
+    std::string heightMap;     // absolute path of a height (bump) map (MTL: map_bump or bump); empty = none
+    float bumpScale = 1.0f;    // multiplies the height map's values (MTL: the -bm option of map_bump)
 };
 
 } // namespace stoa

@@ -4,6 +4,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -18,8 +19,13 @@ struct Vertex {
     glm::vec3 position{0.0f};  // object space
     glm::vec3 normal{0.0f};    // object space, unit length once the mesh is complete
     glm::vec2 uv{0.0f};        // texture coordinates, v up (OpenGL convention: v = 0 is the image's bottom row)
+    /// Object space. xyz: unit tangent, the direction in which u grows along
+    /// the surface, perpendicular to `normal`; w: handedness, +1 or -1, so that
+    /// the bitangent (the direction in which v grows) is w * cross(normal, xyz).
+    /// All zero until something computes tangents (lab 04).
+    glm::vec4 tangent{0.0f};
 };
-static_assert(sizeof(Vertex) == 8 * sizeof(float), "Vertex is uploaded to the GPU as 8 tightly packed floats");
+static_assert(sizeof(Vertex) == 12 * sizeof(float), "Vertex is uploaded to the GPU as 12 tightly packed floats");
 
 /// An indexed triangle list: every three entries of `indices` name the
 /// vertices of one triangle, counter-clockwise when seen from its front.
@@ -36,7 +42,7 @@ public:
     /// Asserts when the mesh has no vertices.
     std::pair<glm::vec3, glm::vec3> bounds() const;
 
-    /// Checks the invariants above and that every position, normal and uv is
+    /// Checks the invariants above and that every position, normal, uv and tangent is
     /// finite. Throws InputError(source, 0, ...) naming the first problem;
     /// `source` names where the mesh came from (usually a file path).
     void validate(const std::string& source) const;
@@ -49,5 +55,14 @@ public:
 /// that duplicates vertices (for different uvs) stays visible. A vertex that
 /// no triangle of non-zero area uses gets the normal +Y.
 void computeSmoothNormals(Mesh& mesh);
+
+/// Lab 04 (labs/04_normal_mapping/tangents.cpp; docs/labs/04_normal_mapping.md):
+/// fills every vertex's `tangent` from the positions and uvs of the triangles
+/// that use it. xyz: the direction in which u grows, made perpendicular to the
+/// vertex normal and unit length; w = +1 or -1, chosen so that w * cross(N, T)
+/// points the way v grows (w = -1 where the uvs are mirrored).
+/// Needs unit normals. A vertex whose triangles give no usable uv direction
+/// (all degenerate in uv) still gets a unit tangent perpendicular to its normal, w = +1.
+void computeTangents(Mesh& mesh);
 
 } // namespace stoa

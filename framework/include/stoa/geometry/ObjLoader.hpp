@@ -33,16 +33,22 @@ struct Model {
 /// - Faces with more than 3 vertices are triangulated; winding is kept.
 /// - Within a part, OBJ corners with the same (position, normal, uv) indices
 ///   become one vertex.
-/// - Materials: Ka, Kd, Ks, Ns, map_Kd and map_Ks; a value the MTL leaves out
-///   keeps the Material default; texture paths are made absolute, relative to
-///   the folder of the MTL file that names them.
+/// - Materials: Ka, Kd, Ks, Ns, map_Kd, map_Ks, norm (normal map) and
+///   map_bump / bump (height map, with its -bm multiplier as bumpScale); a
+///   value the MTL leaves out keeps the Material default; texture paths are
+///   made absolute, relative to the folder of the MTL file that names them.
+///   Texture options (-o, -s, -clamp, ...) other than -bm are read past and
+///   ignored. Other maps (map_Ka, map_d, disp, ...) are ignored.
 ///
 /// Throws InputError naming the file (the OBJ, or the MTL) and the line for:
 /// a file that cannot be read; a face index that is 0 or refers to a
 /// position, uv or normal not defined before that line (negative, relative
 /// indices included); a face with fewer than 3 vertices; a number that is
 /// malformed, NaN or infinite; an mtllib file that does not exist; a usemtl
-/// naming a material no earlier mtllib defined; a line tinyobjloader rejects;
+/// naming a material no earlier mtllib defined; (naming the MTL file and
+/// line) a texture file that does not exist, a map statement without a file
+/// name, an unknown texture option or one with too few values; a line
+/// tinyobjloader rejects;
 /// and (line 0) a file without any face.
 [[nodiscard]] Model loadObj(const std::filesystem::path& path);
 

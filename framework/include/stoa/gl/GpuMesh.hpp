@@ -5,6 +5,7 @@
 //   layout(location = 0) in vec3 aPosition;   // object space
 //   layout(location = 1) in vec3 aNormal;     // object space
 //   layout(location = 2) in vec2 aUv;
+//   layout(location = 3) in vec4 aTangent;    // object space; w = handedness (+-1)
 //
 //   GpuMesh cube(shapes::cube(1.0f));
 //   program.use();
@@ -26,6 +27,7 @@ public:
     static constexpr GLuint kPositionLocation = 0; // vec3
     static constexpr GLuint kNormalLocation = 1;   // vec3
     static constexpr GLuint kUvLocation = 2;       // vec2
+    static constexpr GLuint kTangentLocation = 3;  // vec4: xyz tangent, w handedness (Vertex::tangent)
 
     /// Uploads `mesh` (a copy: the Mesh may go away). Needs a current context.
     /// A mesh without indices is drawn as a plain triangle list.

@@ -18,7 +18,9 @@ public:
 
     /// Loads PNG, BMP, PGM/PPM, TGA or JPG through stb_image. `desiredChannels`
     /// 0 keeps the file's own count; 1..4 converts. Throws InputError naming the
-    /// file and stb's reason when the file is missing or does not decode.
+    /// file and stb's reason when the file is missing or does not decode, and
+    /// when an uncompressed BMP, a TGA or a binary PGM/PPM is shorter than its
+    /// header promises (stb_image would fill the missing pixels with zeros).
     static Image load(const std::filesystem::path& path, int desiredChannels = 0);
 
     /// Writes a PNG. Throws InputError when the file cannot be written.

@@ -1,0 +1,40 @@
+#pragma once
+// Loading the height maps that bump mapping turns into normal maps (lab 04):
+// one 8-bit grey channel, 0 = lowest, 255 = highest, row 0 at the top of the
+// image. Needs no GL context.
+//
+//   Image height = loadHeightMap(assetsDir() / "acropolis/wall_height.pgm");
+//   Image normals = normalMapFromHeight(height, 4.0f);   // lab 04's student code
+
+#include <stoa/image/Image.hpp>
+
+#include <filesystem>
+#include <iosfwd>
+
+namespace stoa {
+
+/// Loads a height map from a PGM (P2/P5), PNG, BMP, TGA or JPG file and returns
+/// it as a 1-channel Image. What the file holds decides what happens:
+///   - 8-bit grey: returned as it is;
+///   - 8-bit grey + alpha, RGB or RGBA: the documented fallback. The height is
+///     the colour's luminance (Rec. 709 weights, alpha ignored) and one line
+///     on `warnings` names the file and says so, because a colour picture is
+///     more often the wrong file (the diffuse map) than a height map;
+///   - 16 bits per channel: InputError naming the file (Stoa's height maps are
+///     8-bit; rescaling silently would change the bump strength);
+///   - missing, a folder, or not an image: InputError naming the file.
+Image loadHeightMap(const std::filesystem::path& path, std::ostream& warnings);
+/// The same, warnings on std::cerr.
+Image loadHeightMap(const std::filesystem::path& path);
+
+/// Lab 04 (labs/04_normal_mapping/height_to_normal.cpp; docs/labs/04_normal_mapping.md,
+/// "From heights to normals"): a tangent-space normal map from a 1-channel
+/// height map. Heights are h = value / 255; x runs along +u and rows run down
+/// the image, along -v. With central differences that wrap around the borders
+/// (the maps tile), the normal of texel (x, y) is
+///   n = normalize(-strength * dh/du, -strength * dh/dv, 1),
+/// packed into an RGB image of the same size as round((n * 0.5 + 0.5) * 255).
+/// `strength` (> 0) is how many texel widths tall a height of 1 stands.
+Image normalMapFromHeight(const Image& height, float strength);
+
+} // namespace stoa

@@ -1,0 +1,35 @@
+#pragma once
+// Draws a texture into a rectangle of the bound framebuffer, over what is there:
+// debug views such as a shadow map in a corner of the window.
+//
+//   TextureOverlay overlay;                         // needs a current context
+//   shadowMap.bindDepthTexture(0);
+//   program.set("uTexture", 0);
+//   overlay.draw(program, {size.x - 256, 0, 256, 256});
+//
+// The program's vertex shader makes the rectangle from gl_VertexID alone (no
+// vertex buffer): shaders/shadows/depth_view.vert is one.
+
+#include <stoa/gl/VertexArray.hpp>
+
+#include <glm/vec4.hpp>
+
+namespace stoa {
+
+class Program;
+
+class TextureOverlay {
+public:
+    /// Creates the (attribute-less) vertex array. Needs a current context.
+    TextureOverlay() = default;
+
+    /// Draws 4 vertices as a triangle strip with `program` into `rectangle`
+    /// (x, y from the bottom-left corner, width, height; pixels), depth test off.
+    /// Restores the viewport and the depth test as they were.
+    void draw(const Program& program, const glm::ivec4& rectangle) const;
+
+private:
+    VertexArray m_vertexArray;
+};
+
+} // namespace stoa

@@ -1,0 +1,243 @@
+// Lab 04 app: a stretch of the Acropolis wall (assets/acropolis/wall.obj),
+// bump mapped with the normal map the student builds from its height map,
+// lit in tangent space (shaders/normal_mapping/normal_mapped.* include
+// labs/04_normal_mapping/tangent_space.glsl and lab 02's lighting.glsl).
+// Beside the wall: a second piece of it with its u mirrored (where the
+// tangent's handedness matters) and a bumped boulder (curved tangent frames).
+//
+// Case keys besides the camera's (CameraRig.hpp):
+//   ambient = r g b                      scene ambient light
+//   sun = dx dy dz  r g b                a directional light (omit for none)
+//   point_light = x y z  r g b           a point light (omit for none)
+//   attenuation = kc kl kq               for the point light
+//   bump_strength = s                    normalMapFromHeight()'s strength (default 6)
+//   view = shaded | normals              normals: the bumped world normal as a colour
+//   normal_mapping = on | off            off: light with the mesh's own normals
+
+#include <stoa/camera/CameraRig.hpp>
+#include <stoa/core/InputError.hpp>
+#include <stoa/core/NotImplemented.hpp>
+#include <stoa/core/Paths.hpp>
+#include <stoa/geometry/Mesh.hpp>
+#include <stoa/geometry/ObjLoader.hpp>
+#include <stoa/geometry/Shapes.hpp>
+#include <stoa/gl/GpuMesh.hpp>
+#include <stoa/gl/Program.hpp>
+#include <stoa/gl/Texture2D.hpp>
+#include <stoa/gl/TextureCache.hpp>
+#include <stoa/image/HeightMap.hpp>
+#include <stoa/lab/CaseManifest.hpp>
+#include <stoa/lab/LabApp.hpp>
+#include <stoa/render/ForwardRenderer.hpp>
+#include <stoa/scene/MeshObject.hpp>
+#include <stoa/scene/Scene.hpp>
+
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+namespace {
+
+enum class View { Shaded = 0, Normals = 1 };  // the values of the shader's uDisplay
+
+/// A MeshObject that also binds a normal map (uNormalMap, uHasNormalMap) on
+/// the first texture unit MeshObject leaves free.
+class BumpedObject : public stoa::MeshObject {
+public:
+    using MeshObject::MeshObject;
+
+    std::shared_ptr<const stoa::Texture2D> normalMap;  // none: lit with the mesh's normals
+
+    void draw(const stoa::Program& program) const override {
+        // The sampler keeps its own unit even without a map (as MeshObject's do).
+        program.set("uNormalMap", kFirstFreeTextureUnit);
+        program.set("uHasNormalMap", normalMap != nullptr);
+        if (normalMap) normalMap->bind(kFirstFreeTextureUnit);
+        MeshObject::draw(program);
+    }
+};
+
+class NormalMappingLab : public stoa::Lab {
+public:
+    void initialize(stoa::LabResources& resources) override {
+        m_program = &resources.loadProgram("normal_mapping/normal_mapped.vert", "normal_mapping/normal_mapped.frag");
+        const stoa::Model wall = stoa::loadObj(stoa::paths::assetsDir() / "acropolis" / "wall.obj");
+        m_wall = wall.parts.front();
+        const std::string heightPath = m_wall.material.heightMap.empty()
+                                           ? (stoa::paths::assetsDir() / "acropolis" / "wall_height.pgm").string()
+                                           : m_wall.material.heightMap;
+        m_height = stoa::loadHeightMap(heightPath);
+    }
+
+    void loadCase(const stoa::CaseSpec& spec) override {
+        m_cameras.loadCase(spec);
+        m_scene.clear();
+        m_scene.ambient = spec.getVec3("ambient", glm::vec3(0.06f));
+        m_scene.directionalLights.clear();
+        m_scene.pointLights.clear();
+        if (spec.has("sun")) {
+            const auto sun = readSix(spec, "sun", "direction x y z, colour r g b");
+            m_scene.directionalLights.push_back({sun.first, sun.second});
+        }
+        const glm::vec3 attenuation = spec.getVec3("attenuation", glm::vec3(1.0f, 0.09f, 0.032f));
+        if (spec.has("point_light")) {
+            const auto point = readSix(spec, "point_light", "position x y z, colour r g b");
+            m_scene.pointLights.push_back({point.first, point.second, attenuation});
+        }
+        const float strength = static_cast<float>(spec.getNumber("bump_strength", 6.0));
+        if (!(strength > 0.0f))
+            throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': bump_strength must be positive");
+        m_view = readChoice(spec, "view", {"shaded", "normals"}, "shaded") == "normals" ? View::Normals : View::Shaded;
+        m_normalMapping = readChoice(spec, "normal_mapping", {"on", "off"}, "on") == "on";
+
+        // Student code from here on: until it runs, render() reports the stub.
+        m_missing = "computeTangents()";
+        buildMeshes();
+        m_missing = "normalMapFromHeight()";
+        const std::shared_ptr<const stoa::Texture2D> normalMap = normalMapFor(strength);
+        m_missing.reset();
+        buildScene(normalMap);
+    }
+
+    void render(glm::ivec2 size) override {
+        if (m_missing) throw stoa::NotImplemented(*m_missing);
+        m_program->use();
+        m_program->set("uNormalMapping", m_normalMapping);
+        m_program->set("uDisplay", static_cast<int>(m_view));
+        m_renderer.render(m_scene, m_cameras.active(), *m_program, size);
+    }
+
+    stoa::Camera& activeCamera() override { return m_cameras.active(); }
+    void toggleCamera() override { m_cameras.toggle(); }
+
+    bool keyPressed(unsigned char key) override {
+        if (key == 'n') {
+            m_normalMapping = !m_normalMapping;
+            std::printf("normal mapping %s\n", m_normalMapping ? "on" : "off");
+            return true;
+        }
+        if (key == 'v') {
+            m_view = m_view == View::Shaded ? View::Normals : View::Shaded;
+            std::printf("view: %s\n", m_view == View::Shaded ? "shaded" : "normals as colour");
+            return true;
+        }
+        return false;
+    }
+
+    std::vector<std::string> keyHelp() const override {
+        return {"n            toggle normal mapping (off: the mesh's own normals)",
+                "v            switch view: shaded / world normals as colour (n * 0.5 + 0.5)"};
+    }
+
+private:
+    // The meshes need the student's tangents; they are built once, at the first case.
+    void buildMeshes() {
+        if (m_wallMesh) return;
+        stoa::Mesh wall = m_wall.mesh;
+        stoa::computeTangents(wall);
+        // The same wall with u running the other way: a mirrored texture, as
+        // modellers make to save texture space. Its bitangent is cross(N, T)
+        // with the opposite sign: the handedness, w = -1.
+        stoa::Mesh mirrored = m_wall.mesh;
+        for (stoa::Vertex& vertex : mirrored.vertices) vertex.uv.x = -vertex.uv.x;
+        stoa::computeTangents(mirrored);
+        stoa::Mesh boulder = stoa::shapes::sphere(0.5f, 64, 32);
+        for (stoa::Vertex& vertex : boulder.vertices) vertex.uv *= glm::vec2(3.0f, 1.5f);  // smaller stones
+        stoa::computeTangents(boulder);
+        stoa::Mesh floor = stoa::shapes::plane(1.0f, 1);
+        stoa::computeTangents(floor);
+
+        m_wallMesh = std::make_shared<const stoa::GpuMesh>(wall);
+        m_mirroredMesh = std::make_shared<const stoa::GpuMesh>(mirrored);
+        m_boulderMesh = std::make_shared<const stoa::GpuMesh>(boulder);
+        m_floorMesh = std::make_shared<const stoa::GpuMesh>(floor);
+    }
+
+    // One normal map per strength a case asks for.
+    std::shared_ptr<const stoa::Texture2D> normalMapFor(float strength) {
+        auto found = m_normalMaps.find(strength);
+        if (found != m_normalMaps.end()) return found->second;
+        const stoa::Image normals = stoa::normalMapFromHeight(m_height, strength);
+        auto texture = std::make_shared<const stoa::Texture2D>(stoa::Texture2D::fromImage(normals));
+        m_normalMaps.emplace(strength, texture);
+        return texture;
+    }
+
+    void buildScene(const std::shared_ptr<const stoa::Texture2D>& normalMap) {
+        stoa::Material stone;
+        stone.name = "boulder";
+        stone.ambient = stone.diffuse = glm::vec3(0.78f, 0.74f, 0.66f);
+        stone.specular = glm::vec3(0.25f);
+        stone.shininess = 24.0f;
+        stoa::Material ground;
+        ground.name = "ground";
+        ground.ambient = ground.diffuse = glm::vec3(0.45f, 0.43f, 0.40f);
+        ground.specular = glm::vec3(0.05f);
+        ground.shininess = 8.0f;
+
+        auto add = [&](const std::shared_ptr<const stoa::GpuMesh>& mesh, const stoa::Material& material,
+                       const char* name, glm::vec3 position, float yawDegrees, glm::vec3 scale,
+                       std::shared_ptr<const stoa::Texture2D> map) {
+            BumpedObject& object = m_scene.add(std::make_unique<BumpedObject>(mesh, material));
+            object.name = name;
+            object.position = position;
+            object.rotationDegrees = {0.0f, yawDegrees, 0.0f};
+            object.scale = scale;
+            object.normalMap = std::move(map);
+        };
+        // Load the wall's diffuse map now rather than at its first draw: creating
+        // a texture binds it on the active unit, which would replace the normal
+        // map that draw() has just bound.
+        // (The cache holds textures weakly: keep this one alive.)
+        if (!m_wall.material.diffuseMap.empty() && !m_wallDiffuse)
+            m_wallDiffuse = stoa::TextureCache::shared().load(m_wall.material.diffuseMap);
+        // wall.obj spans x in [-4, 4], y in [0, 3], z in [-0.3, 0.3].
+        add(m_floorMesh, ground, "floor", {0.0f, 0.0f, 0.0f}, 0.0f, {16.0f, 1.0f, 16.0f}, nullptr);
+        add(m_wallMesh, m_wall.material, "wall", {-1.5f, 0.0f, -1.0f}, 0.0f, glm::vec3(0.5f), normalMap);
+        add(m_mirroredMesh, m_wall.material, "mirrored wall", {1.9f, 0.0f, 0.0f}, -60.0f, glm::vec3(0.5f), normalMap);
+        add(m_boulderMesh, stone, "boulder", {0.3f, 0.55f, 0.9f}, 30.0f, glm::vec3(1.1f), normalMap);
+    }
+
+    static std::pair<glm::vec3, glm::vec3> readSix(const stoa::CaseSpec& spec, const std::string& key,
+                                                   const std::string& expected) {
+        std::istringstream words(spec.getString(key));
+        float values[6];
+        for (float& value : values)
+            if (!(words >> value))
+                throw stoa::InputError(spec.file, spec.line,
+                                       "case '" + spec.name + "': " + key + " takes six numbers: " + expected);
+        return {{values[0], values[1], values[2]}, {values[3], values[4], values[5]}};
+    }
+
+    static std::string readChoice(const stoa::CaseSpec& spec, const std::string& key,
+                                  const std::vector<std::string>& choices, const std::string& fallback) {
+        const std::string value = spec.getString(key, fallback);
+        for (const std::string& choice : choices)
+            if (value == choice) return value;
+        std::string expected;
+        for (const std::string& choice : choices) expected += (expected.empty() ? "" : " or ") + choice;
+        throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': " + key + " must be " + expected);
+    }
+
+    stoa::ModelPart m_wall;
+    stoa::Image m_height;
+    std::shared_ptr<const stoa::GpuMesh> m_wallMesh, m_mirroredMesh, m_boulderMesh, m_floorMesh;
+    std::map<float, std::shared_ptr<const stoa::Texture2D>> m_normalMaps;
+    std::shared_ptr<const stoa::Texture2D> m_wallDiffuse;
+    std::optional<std::string> m_missing;  // the student function that has not run yet
+    View m_view = View::Shaded;
+    bool m_normalMapping = true;
+    stoa::Scene m_scene;
+    stoa::CameraRig m_cameras;
+    stoa::ForwardRenderer m_renderer;
+    stoa::Program* m_program = nullptr;
+};
+
+} // namespace
+
+int main(int argc, char** argv) {
+    NormalMappingLab lab;
+    return stoa::runLab(lab, STOA_LAB_BUILD_INFO, argc, argv);
+}

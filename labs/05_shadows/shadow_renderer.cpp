@@ -1,0 +1,168 @@
+#include "shadow_renderer.hpp"
+
+#include <stoa/camera/Camera.hpp>
+#include <stoa/core/Assert.hpp>
+#include <stoa/gl/OpenGL.hpp>
+#include <stoa/gl/Program.hpp>
+#include <stoa/render/ShadowMapping.hpp>
+#include <stoa/scene/Scene.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace stoa {
+
+const char* toString(PcfMode mode) {
+    switch (mode) {
+    case PcfMode::Single: return "single";
+    case PcfMode::TwoByTwo: return "2x2";
+    case PcfMode::ThreeByThree: return "3x3";
+    }
+    return "?";
+}
+
+ShadowRenderer::ShadowRenderer(const Program& depthProgram, const Program& shadowedProgram,
+                               const Program& mapViewProgram)
+    : m_depthProgram(depthProgram), m_shadowedProgram(shadowedProgram), m_mapViewProgram(mapViewProgram) {}
+
+void ShadowRenderer::renderShadowMap(const Scene& scene, const ShadowLight& light, int mapSize) {
+    STOA_ASSERT(mapSize > 0, "ShadowRenderer::renderShadowMap(): the map needs at least one texel per side");
+    if (m_shadowMap.width() != mapSize) {
+        FramebufferOptions options;
+        options.color = false;
+        options.depthTexture = true;
+        m_shadowMap = Framebuffer(mapSize, mapSize, options);
+    }
+    // The lab draws into whatever the app bound (the window, or the headless
+    // target): remember it, since the depth pass binds the map.
+    GLint previous = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    renderShadowPass(scene, m_shadowMap, m_depthProgram, light.lightSpaceMatrix);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous));
+}
+
+void ShadowRenderer::renderLit(const Scene& scene, const Camera& camera, glm::ivec2 size, const ShadowLight& light,
+                               const ShadowSettings& settings) {
+    const bool withMap = settings.enabled && m_shadowMap.id() != 0;
+    if (withMap) m_shadowMap.bindDepthTexture(kShadowMapUnit);
+    m_shadowedProgram.set("uShadowMap", kShadowMapUnit);
+    m_shadowedProgram.set("uShadowsEnabled", withMap);
+    m_shadowedProgram.set("uLightKind", light.perspective ? 1 : 0);
+    m_shadowedProgram.set("uLightSpaceMatrix", light.lightSpaceMatrix);
+    m_shadowedProgram.set("uShadowBias", settings.bias);
+    m_shadowedProgram.set("uPcfMode", static_cast<int>(settings.pcf));
+    m_forward.clearColor = clearColor;
+    m_forward.render(scene, camera, m_shadowedProgram, size);
+}
+
+void ShadowRenderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size, const ShadowLight& light,
+                            const ShadowSettings& settings) {
+    if (settings.cascades.count > 0) {
+        renderCascaded(scene, camera, size, light, settings);
+        return;
+    }
+    if (settings.enabled || settings.showMap) renderShadowMap(scene, light, settings.mapSize);
+    renderLit(scene, camera, size, light, settings);
+    if (settings.showMap) {
+        const int side = std::max(1, std::min(size.x, size.y) / 3);
+        drawMapView(m_shadowMap, light, {size.x - side - 8, 8, side, side});
+    }
+}
+
+void ShadowRenderer::drawMapView(const Framebuffer& map, const ShadowLight& light, const glm::ivec4& rectangle) {
+    map.bindDepthTexture(kShadowMapUnit);
+    m_mapViewProgram.set("uDepthMap", kShadowMapUnit);
+    m_mapViewProgram.set("uPerspective", light.perspective);
+    m_mapViewProgram.set("uNear", light.near);
+    m_mapViewProgram.set("uFar", light.far);
+    m_overlay.draw(m_mapViewProgram, rectangle);
+}
+
+namespace {
+
+// The bias (slope factor, minimum, maximum) in shadow-map texels of world size:
+// the 1024^2 sun map of the single-map cases spends about 0.04 m per texel and
+// uses kSunBias = (0.004, 0.001, 0.015) of a 40 m depth range, i.e. these.
+constexpr glm::vec3 kCascadeBiasTexels{4.0f, 1.0f, 15.0f};
+
+// A cascade's bias in its own window-depth units. Its matrix is an orthographic
+// projection times a rotation, so the length of row 0 is 2 / (box width) and
+// that of row 2 is 2 / (depth range).
+glm::vec3 cascadeBias(const glm::mat4& matrix, int mapSize) {
+    const float rowX = glm::length(glm::vec3(matrix[0][0], matrix[1][0], matrix[2][0]));
+    const float rowZ = glm::length(glm::vec3(matrix[0][2], matrix[1][2], matrix[2][2]));
+    const float texelWorld = 2.0f / (rowX * static_cast<float>(mapSize));
+    const float depthRange = 2.0f / rowZ;
+    return kCascadeBiasTexels * (texelWorld / depthRange);
+}
+
+} // namespace
+
+void ShadowRenderer::renderCascaded(const Scene& scene, const Camera& camera, glm::ivec2 size,
+                                    const ShadowLight& light, const ShadowSettings& settings) {
+    const int count = settings.cascades.count;
+    STOA_ASSERT(count >= 1 && count <= kMaxCascades, "ShadowRenderer::render(): CascadeSettings::count must be 0 to 4");
+    STOA_ASSERT(m_cascadeProgram != nullptr,
+                "ShadowRenderer::render(): cascades need setCascadeProgram() (shadows/shadowed.vert + cascaded.frag)");
+    STOA_ASSERT(!light.perspective && !scene.directionalLights.empty(),
+                "ShadowRenderer::render(): cascades are for the sun (scene.directionalLights[0]); use light = sun");
+    const glm::vec3 sunDirection = scene.directionalLights.front().direction;
+    const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+    const float far = std::min(settings.cascades.far, camera.farPlane());
+    m_splits = cascadeSplits(camera.nearPlane(), far, count, settings.cascades.lambda);
+    STOA_ASSERT(m_splits.size() == static_cast<std::size_t>(count) + 1,
+                "cascadeSplits(): must return count + 1 depths, near first and far last");
+
+    const glm::mat4 view = camera.viewMatrix();
+    const bool withMaps = settings.enabled || settings.showMap;
+    GLint previous = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    for (int i = 0; i < count && withMaps; ++i) {
+        const auto cascade = static_cast<std::size_t>(i);
+        const std::array<glm::vec3, 8> corners =
+            frustumSliceCorners(view, camera.fovYDegrees(), aspect, m_splits[cascade], m_splits[cascade + 1]);
+        m_cascadeMatrices[cascade] =
+            cascadeLightMatrix(sunDirection, corners, settings.mapSize, light.sceneMin, light.sceneMax);
+        if (m_cascadeMaps[cascade].width() != settings.mapSize) {
+            FramebufferOptions options;
+            options.color = false;
+            options.depthTexture = true;
+            m_cascadeMaps[cascade] = Framebuffer(settings.mapSize, settings.mapSize, options);
+        }
+        renderShadowPass(scene, m_cascadeMaps[cascade], m_depthProgram, m_cascadeMatrices[cascade]);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous));
+
+    const Program& program = *m_cascadeProgram;
+    glm::vec4 splitFar(far);
+    for (int i = 0; i < count; ++i) {
+        const auto cascade = static_cast<std::size_t>(i);
+        const std::string index = "[" + std::to_string(i) + "]";
+        splitFar[i] = m_splits[cascade + 1];
+        if (settings.enabled) m_cascadeMaps[cascade].bindDepthTexture(kFirstCascadeUnit + i);
+        program.set("uCascadeMaps" + index, kFirstCascadeUnit + i);
+        program.set("uCascadeMatrices" + index, m_cascadeMatrices[cascade]);
+        program.set("uCascadeBiases" + index, cascadeBias(m_cascadeMatrices[cascade], settings.mapSize));
+    }
+    // Units of the cascades a case does not use still need a sampler2D's unit.
+    for (int i = count; i < kMaxCascades; ++i)
+        program.set("uCascadeMaps[" + std::to_string(i) + "]", kFirstCascadeUnit + i);
+    program.set("uCascadeSplits", splitFar);
+    program.set("uCascadeCount", count);
+    program.set("uShadowsEnabled", settings.enabled);
+    program.set("uPcfMode", static_cast<int>(settings.pcf));
+    program.set("uCascadeColors", settings.cascades.colors);
+    m_forward.clearColor = clearColor;
+    m_forward.render(scene, camera, program, size);
+
+    if (settings.showMap) {
+        // The cascades side by side along the bottom, near to far from the left.
+        const int side = std::max(1, std::min(size.x / (count + 1), size.y / 3));
+        for (int i = 0; i < count; ++i)
+            drawMapView(m_cascadeMaps[static_cast<std::size_t>(i)], light,
+                        {size.x - (count - i) * (side + 4) - 4, 8, side, side});
+    }
+}
+
+} // namespace stoa

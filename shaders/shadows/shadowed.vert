@@ -1,0 +1,23 @@
+#version 330 core
+// Lab 05's second pass, vertex stage: the student's lab-02 transforms.
+#include "02_shading/transform.glsl"
+
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aUv;
+
+uniform mat4 uModel;
+uniform mat4 uView;
+uniform mat4 uProjection;
+uniform mat3 uNormalMatrix;
+
+out vec3 vPositionWorld;
+out vec3 vNormalWorld;
+out vec2 vUv;
+
+void main() {
+    vPositionWorld = (uModel * vec4(aPosition, 1.0)).xyz;
+    vNormalWorld = worldNormal(uNormalMatrix, aNormal);
+    vUv = aUv;
+    gl_Position = clipPosition(uModel, uView, uProjection, aPosition);
+}

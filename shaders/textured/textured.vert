@@ -1,0 +1,25 @@
+#version 330 core
+// Lab 03's vertex stage: lab 02's transforms (the student's transform.glsl)
+// and lab 03's texture coordinates (textures.glsl).
+#include "02_shading/transform.glsl"
+#include "03_meshes/textures.glsl"
+
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aUv;
+
+uniform mat4 uModel;
+uniform mat4 uView;
+uniform mat4 uProjection;
+uniform mat3 uNormalMatrix;
+
+out vec3 vPositionWorld;
+out vec3 vNormalWorld;
+out vec2 vUv;
+
+void main() {
+    vPositionWorld = (uModel * vec4(aPosition, 1.0)).xyz;
+    vNormalWorld = worldNormal(uNormalMatrix, aNormal);
+    vUv = vertexUv(aUv);
+    gl_Position = clipPosition(uModel, uView, uProjection, aPosition);
+}

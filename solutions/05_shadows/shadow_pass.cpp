@@ -1,0 +1,29 @@
+// Lab 05: the first pass, the scene's depth seen from the light.
+// Read docs/labs/05_shadows.md, "The two passes".
+
+#include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/OpenGL.hpp>
+#include <stoa/gl/Program.hpp>
+#include <stoa/render/ShadowMapping.hpp>
+#include <stoa/scene/Scene.hpp>
+
+namespace stoa {
+
+void renderShadowPass(const Scene& scene, const Framebuffer& shadowMap, const Program& depthProgram,
+                      const glm::mat4& lightSpaceMatrix) {
+    shadowMap.bind();   // also the viewport: the whole map
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    // Both faces go into the map: the single-sided floor must be there too, and
+    // all the bias is then the shader's, where you can see what it does.
+    glDisable(GL_CULL_FACE);
+
+    depthProgram.use();
+    depthProgram.set("uLightSpaceMatrix", lightSpaceMatrix);
+    for (const auto& object : scene.objects()) object->draw(depthProgram);
+
+    glEnable(GL_CULL_FACE);
+}
+
+} // namespace stoa
