@@ -67,6 +67,25 @@ TEST_CASE("GpuMesh: positions, normals and uvs reach attribute locations 0, 1 an
     CHECK(glGetError() == GL_NO_ERROR);
 }
 
+TEST_CASE("GpuMesh: the tangent and its handedness reach attribute location 3") {
+    HeadlessContext context;
+    Mesh square = clipSquare(true);
+    for (Vertex& vertex : square.vertices) vertex.tangent = glm::vec4(0.0f, -1.0f, 0.0f, -1.0f);
+    const GpuMesh mesh(square);
+    const Program program = Program::fromFiles(glShadersDir / "mesh_tangent.vert", glShadersDir / "mesh.frag", {});
+    Framebuffer target(16, 16);
+    target.bind();
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    program.use();
+    mesh.draw();
+    const Image image = target.readColor();
+    INFO("centre pixel " << describe(image.pixel(8, 8)));
+    // x 0 -> 0.5, y -1 -> 0, w -1 -> 0.
+    CHECK(near(image.pixel(8, 8), glm::u8vec4(128, 0, 0, 255), 2));
+    CHECK(glGetError() == GL_NO_ERROR);
+}
+
 TEST_CASE("GpuMesh: a mesh without indices draws as a triangle list") {
     HeadlessContext context;
     const GpuMesh mesh(clipSquare(false));
