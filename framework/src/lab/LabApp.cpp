@@ -118,6 +118,19 @@ void throwIfShaderStubs(const LabResources& resources) {
     }
 }
 
+// The picture of a case whose scene is loaded: rendered at the case's size into
+// an offscreen target, as `--render` writes it and the grader compares it.
+// Throws NotImplemented or ShaderNotImplemented while a stub is in place.
+Image renderCaseImage(Lab& lab, const LabResources& resources, const CaseSpec& spec) {
+    Framebuffer target(spec.width, spec.height, FramebufferOptions{});
+    target.bind();
+    lab.render({spec.width, spec.height});
+    throwIfShaderStubs(resources);
+    Image image = target.readColor();
+    Framebuffer::bindDefault();
+    return image;
+}
+
 int renderHeadless(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, const Options& options) {
     const CaseSpec& spec = findCase(manifest, options.renderCase);
     HeadlessContext context(options.backend);
@@ -127,12 +140,7 @@ int renderHeadless(Lab& lab, const LabBuildInfo& info, const LabManifest& manife
     lab.loadCase(spec);
     spec.requireAllKeysUsed();
 
-    Framebuffer target(spec.width, spec.height, FramebufferOptions{});
-    target.bind();
-    lab.render({spec.width, spec.height});
-    throwIfShaderStubs(resources);
-    Image image = target.readColor();
-    image.savePng(options.output);
+    renderCaseImage(lab, resources, spec).savePng(options.output);
     return kExitOk;
 }
 
@@ -263,12 +271,7 @@ private:
         Image yours;
         try {
             m_lab.loadCase(spec);
-            Framebuffer target(spec.width, spec.height, FramebufferOptions{});
-            target.bind();
-            m_lab.render({spec.width, spec.height});
-            throwIfShaderStubs(m_resources);
-            yours = target.readColor();
-            Framebuffer::bindDefault();
+            yours = renderCaseImage(m_lab, m_resources, spec);
         } catch (const NotImplemented& stub) {
             Framebuffer::bindDefault();
             showProblem("not implemented: " + stub.function());
