@@ -10,7 +10,6 @@
 //   shininess_scale = s                  multiplies every material's exponent
 
 #include <stoa/camera/CameraRig.hpp>
-#include <stoa/core/InputError.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
@@ -18,7 +17,7 @@
 #include <stoa/scene/MeshObject.hpp>
 #include <stoa/scene/ShapesScene.hpp>
 
-#include <sstream>
+#include <vector>
 
 namespace {
 
@@ -38,10 +37,11 @@ public:
         stoa::buildShapesScene(m_scene);
         m_cameras.loadCase(spec);
         m_scene.ambient = spec.getVec3("ambient", glm::vec3(0.08f));
-        if (spec.has("sun")) m_scene.directionalLights.push_back(readSun(spec));
-        const int pointCount = spec.getInt("point_lights", 0);
-        if (pointCount < 0 || pointCount > 3)
-            throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': point_lights must be 0 to 3");
+        if (spec.has("sun")) {
+            const std::vector<float> sun = spec.getNumbers("sun", 6, "direction x y z, colour r g b");
+            m_scene.directionalLights.push_back({{sun[0], sun[1], sun[2]}, {sun[3], sun[4], sun[5]}});
+        }
+        const int pointCount = spec.getIntInRange("point_lights", 0, 3, 0);
         const glm::vec3 attenuation = spec.getVec3("attenuation", glm::vec3(1.0f, 0.09f, 0.032f));
         for (int i = 0; i < pointCount; ++i) {
             stoa::PointLight light = kPointLights[i];
@@ -60,16 +60,6 @@ public:
     void toggleCamera() override { m_cameras.toggle(); }
 
 private:
-    static stoa::DirectionalLight readSun(const stoa::CaseSpec& spec) {
-        std::istringstream words(spec.getString("sun"));
-        float values[6];
-        for (float& value : values)
-            if (!(words >> value))
-                throw stoa::InputError(spec.file, spec.line, "case '" + spec.name +
-                                                                 "': sun takes six numbers: direction x y z, colour r g b");
-        return {{values[0], values[1], values[2]}, {values[3], values[4], values[5]}};
-    }
-
     stoa::Scene m_scene;
     stoa::CameraRig m_cameras;
     stoa::ForwardRenderer m_renderer;

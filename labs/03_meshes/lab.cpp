@@ -18,7 +18,6 @@
 #include "normals.hpp"
 
 #include <stoa/camera/CameraRig.hpp>
-#include <stoa/core/InputError.hpp>
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/core/Paths.hpp>
 #include <stoa/geometry/ObjLoader.hpp>
@@ -108,11 +107,11 @@ public:
         m_scene.directionalLights.clear();
         m_scene.pointLights.clear();
         if (spec.has("sun")) {
-            const std::vector<float> sun = sixNumbers(spec, "sun", "direction x y z, colour r g b");
+            const std::vector<float> sun = spec.getNumbers("sun", 6, "direction x y z, colour r g b");
             m_scene.directionalLights.push_back({{sun[0], sun[1], sun[2]}, {sun[3], sun[4], sun[5]}});
         }
         if (spec.has("point_light")) {
-            const std::vector<float> light = sixNumbers(spec, "point_light", "position x y z, colour r g b");
+            const std::vector<float> light = spec.getNumbers("point_light", 6, "position x y z, colour r g b");
             const glm::vec3 attenuation = spec.getVec3("attenuation", glm::vec3(1.0f, 0.09f, 0.032f));
             m_scene.pointLights.push_back(
                 {{light[0], light[1], light[2]}, {light[3], light[4], light[5]}, attenuation});
@@ -148,33 +147,18 @@ private:
         std::vector<std::string> pieces{std::istream_iterator<std::string>(words), {}};
         std::string known;
         for (const auto& entry : kPieces) known += " " + entry.first;
-        if (pieces.empty())
-            throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': objects names none of" + known);
+        if (pieces.empty()) spec.reject("objects", "objects names none of" + known);
         for (const std::string& piece : pieces) {
-            if (!kPieces.count(piece))
-                throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': objects: unknown piece '" +
-                                                                 piece + "' (known:" + known + ")");
+            if (!kPieces.count(piece)) spec.reject("objects", "objects: unknown piece '" + piece + "' (known:" + known + ")");
         }
         return pieces;
     }
 
     static NormalMode readNormalMode(const stoa::CaseSpec& spec) {
-        const std::string mode = spec.getString("normals", std::string("smooth"));
-        if (mode == "smooth") return NormalMode::Smooth;
+        const std::string mode = spec.getChoice("normals", {"smooth", "facet", "file"}, std::string("smooth"));
         if (mode == "facet") return NormalMode::Facet;
         if (mode == "file") return NormalMode::File;
-        throw stoa::InputError(spec.file, spec.line,
-                               "case '" + spec.name + "': normals must be smooth, facet or file, not '" + mode + "'");
-    }
-
-    static std::vector<float> sixNumbers(const stoa::CaseSpec& spec, const std::string& key, const char* meaning) {
-        std::istringstream words(spec.getString(key));
-        std::vector<float> values(6);
-        for (float& value : values)
-            if (!(words >> value))
-                throw stoa::InputError(spec.file, spec.line,
-                                       "case '" + spec.name + "': " + key + " takes six numbers: " + meaning);
-        return values;
+        return NormalMode::Smooth;
     }
 
     /// The model's parts as loaded (CPU), read once per run.

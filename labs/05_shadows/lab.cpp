@@ -34,7 +34,6 @@
 #include "shadow_renderer.hpp"
 
 #include <stoa/camera/CameraRig.hpp>
-#include <stoa/core/InputError.hpp>
 #include <stoa/geometry/ObjLoader.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
@@ -49,7 +48,6 @@
 #include <memory>
 #include <string>
 #include <vector>
-#include <sstream>
 
 namespace {
 
@@ -117,7 +115,7 @@ public:
     }
 
     void loadCase(const stoa::CaseSpec& spec) override {
-        const std::string sceneName = spec.getString("scene", std::string("acropolis"));
+        const std::string sceneName = spec.getChoice("scene", {"acropolis", "large", "shapes"}, std::string("acropolis"));
         if (sceneName == "acropolis") {
             stoa::buildAcropolisScene(m_scene);
             const auto [low, high] = stoa::acropolisBounds();
@@ -126,72 +124,63 @@ public:
         } else if (sceneName == "large") {
             m_bounds = buildLargeScene(m_scene);
             m_scene.directionalLights.clear();
-        } else if (sceneName == "shapes") {
+        } else {
             stoa::buildShapesScene(m_scene);
             m_bounds = {{-5.0f, 0.0f, -5.0f}, {5.0f, 2.5f, 5.0f}};
-        } else {
-            throw stoa::InputError(spec.file, spec.line,
-                                   "case '" + spec.name + "': scene must be acropolis, large or shapes");
         }
         m_cameras.loadCase(spec);
         m_scene.ambient = spec.getVec3("ambient", glm::vec3(0.12f, 0.13f, 0.15f));
 
         m_settings = {};
-        m_settings.enabled = readSwitch(spec, "shadows", true);
-        m_settings.showMap = readSwitch(spec, "show_map", false);
-        m_settings.mapSize = spec.getInt("shadow_map_size", 1024);
-        if (m_settings.mapSize < 16 || m_settings.mapSize > 8192)
-            throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': shadow_map_size must be 16 to 8192");
-        const std::string pcf = spec.getString("pcf", std::string("single"));
-        if (pcf == "single") m_settings.pcf = stoa::PcfMode::Single;
-        else if (pcf == "2x2") m_settings.pcf = stoa::PcfMode::TwoByTwo;
-        else if (pcf == "3x3") m_settings.pcf = stoa::PcfMode::ThreeByThree;
-        else throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': pcf must be single, 2x2 or 3x3");
+        m_settings.enabled = spec.getSwitch("shadows", true);
+        m_settings.showMap = spec.getSwitch("show_map", false);
+        m_settings.mapSize = spec.getIntInRange("shadow_map_size", 16, 8192, 1024);
+        const std::string pcf = spec.getChoice("pcf", {"single", "2x2", "3x3"}, std::string("single"));
+        m_settings.pcf = pcf == "3x3"   ? stoa::PcfMode::ThreeByThree
+                         : pcf == "2x2" ? stoa::PcfMode::TwoByTwo
+                                        : stoa::PcfMode::Single;
 
-        m_settings.cascades.count = spec.getInt("cascades", 0);
-        if (m_settings.cascades.count < 0 || m_settings.cascades.count > stoa::ShadowRenderer::kMaxCascades)
-            throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': cascades must be 0 to 4");
-        m_settings.cascades.lambda = static_cast<float>(spec.getNumber("cascade_lambda", 0.75));
-        if (m_settings.cascades.lambda < 0.0f || m_settings.cascades.lambda > 1.0f)
-            throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': cascade_lambda must be 0 to 1");
+        m_settings.cascades.count = spec.getIntInRange("cascades", 0, stoa::ShadowRenderer::kMaxCascades, 0);
+        m_settings.cascades.lambda = static_cast<float>(spec.getNumberInRange("cascade_lambda", 0.0, 1.0, 0.75));
         m_settings.cascades.far = static_cast<float>(spec.getNumber("cascade_far", 80.0));
-        if (m_settings.cascades.far <= 0.0f)
-            throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': cascade_far must be positive");
-        m_settings.cascades.colors = readSwitch(spec, "cascade_colors", false);
+        if (!(m_settings.cascades.far > 0.0f)) spec.reject("cascade_far", "cascade_far must be greater than 0");
+        m_settings.cascades.colors = spec.getSwitch("cascade_colors", false);
         m_cascadeCountOn = m_settings.cascades.count > 0 ? m_settings.cascades.count : 4;
 
         // The default biases suit a 1024^2 map; a coarser map's texels span more
         // depth and need proportionally more.
         const float mapScale = 1024.0f / static_cast<float>(m_settings.mapSize);
         m_light = {};
-        const std::string light = spec.getString("light", std::string("sun"));
+        const std::string light = spec.getChoice("light", {"sun", "point"}, std::string("sun"));
         if (light == "sun") {
-            const auto [direction, color] = readLight(spec, "sun", "direction x y z");
-            m_scene.directionalLights.push_back({direction, color});
+            const std::vector<float> sun = spec.getNumbers("sun", 6, "direction x y z, colour r g b");
+            const glm::vec3 direction(sun[0], sun[1], sun[2]);
+            m_scene.directionalLights.push_back({direction, {sun[3], sun[4], sun[5]}});
             m_settings.bias = spec.getVec3("bias", kSunBias * mapScale);
             m_light.perspective = false;
             m_light.lightSpaceMatrix = stoa::directionalLightMatrix(direction, m_bounds.min, m_bounds.max);
         } else if (light == "point") {
-            const auto [position, color] = readLight(spec, "point", "position x y z");
+            const std::vector<float> point = spec.getNumbers("point", 6, "position x y z, colour r g b");
+            const glm::vec3 position(point[0], point[1], point[2]);
             const glm::vec3 attenuation = spec.getVec3("attenuation", glm::vec3(1.0f, 0.045f, 0.0075f));
-            m_scene.pointLights.push_back({position, color, attenuation});
+            m_scene.pointLights.push_back({position, {point[3], point[4], point[5]}, attenuation});
             m_settings.bias = spec.getVec3("bias", kPointBias * mapScale);
             const glm::vec3 target = spec.getVec3("point_target", 0.5f * (m_bounds.min + m_bounds.max));
-            const float fov = static_cast<float>(spec.getNumber("point_fov", 90.0));
-            const std::string range = spec.getString("point_range", std::string("0.5 30"));
-            std::istringstream words(range);
-            if (!(words >> m_light.near >> m_light.far) || m_light.near <= 0.0f || m_light.far <= m_light.near)
-                throw stoa::InputError(spec.file, spec.line,
-                                       "case '" + spec.name + "': point_range takes two numbers, 0 < near < far");
-            if (fov <= 1.0f || fov >= 179.0f)
-                throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': point_fov must be 1 to 179 degrees");
+            const float fov = static_cast<float>(spec.getNumberInRange("point_fov", 1.0, 179.0, 90.0));
+            m_light.near = 0.5f;
+            m_light.far = 30.0f;
+            if (spec.has("point_range")) {
+                const std::vector<float> range = spec.getNumbers("point_range", 2, "near far");
+                m_light.near = range[0];
+                m_light.far = range[1];
+                if (!(m_light.near > 0.0f && m_light.far > m_light.near))
+                    spec.reject("point_range", "point_range needs 0 < near < far");
+            }
             m_light.perspective = true;
             m_light.lightSpaceMatrix = stoa::spotLightMatrix(position, target, fov, m_light.near, m_light.far);
-        } else {
-            throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': light must be sun or point");
         }
         if (m_settings.cascades.count > 0 && light != "sun")
-            throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': cascades need light = sun");
+            spec.reject("cascades", "cascades need light = sun (a point light has one perspective map)");
         m_light.sceneMin = m_bounds.min;
         m_light.sceneMax = m_bounds.max;
         if (m_settings.cascades.count > 0) loadCascadeProgram();
@@ -244,25 +233,6 @@ private:
         if (!m_cascadeProgram)
             m_cascadeProgram = &m_resources->loadProgram("shadows/shadowed.vert", "shadows/cascaded.frag");
         m_renderer->setCascadeProgram(m_cascadeProgram);
-    }
-
-    static bool readSwitch(const stoa::CaseSpec& spec, const std::string& key, bool fallback) {
-        const std::string value = spec.getString(key, std::string(fallback ? "on" : "off"));
-        if (value == "on") return true;
-        if (value == "off") return false;
-        throw stoa::InputError(spec.file, spec.line, "case '" + spec.name + "': " + key + " must be on or off");
-    }
-
-    // "key = x y z  r g b": a vector and a colour.
-    static std::pair<glm::vec3, glm::vec3> readLight(const stoa::CaseSpec& spec, const std::string& key,
-                                                     const std::string& what) {
-        std::istringstream words(spec.getString(key));
-        float values[6];
-        for (float& value : values)
-            if (!(words >> value))
-                throw stoa::InputError(spec.file, spec.line,
-                                       "case '" + spec.name + "': " + key + " takes six numbers: " + what + ", colour r g b");
-        return {{values[0], values[1], values[2]}, {values[3], values[4], values[5]}};
     }
 
     stoa::Scene m_scene;

@@ -9,6 +9,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 using stoa::CaseSpec;
 using stoa::InputError;
@@ -247,6 +248,61 @@ TEST_CASE("CaseSpec getters: values, fallbacks and errors with the key's line", 
         {[&] { spec.getNumber("missing"); }, 2, "case 'test' needs a 'missing = NUMBER' line"},
         {[&] { spec.getInt("missing"); }, 2, "case 'test' needs a 'missing = INTEGER' line"},
         {[&] { spec.getVec3("missing"); }, 2, "case 'test' needs a 'missing = X Y Z' line"},
+    };
+    for (const Bad& each : bad) {
+        INFO(each.message);
+        const auto error = inputErrorFrom(each.read);
+        REQUIRE(error);
+        CHECK(error->file() == "cases.ini");
+        CHECK(error->line() == each.line);
+        CHECK(error->message() == each.message);
+    }
+}
+
+TEST_CASE("CaseSpec checked getters: ranges, lists of numbers, choices and switches", "[lab][manifest]") {
+    const CaseSpec spec = caseWith("cascades = 4\n"                 // line 3
+                                   "too_many = 7\n"                 // line 4
+                                   "lambda = 0.75\n"                // line 5
+                                   "too_big = 1.5\n"                // line 6
+                                   "sun = 1 -2 0.5  1 0.9 0.8\n"    // line 7
+                                   "five = 1 2 3 4 5\n"             // line 8
+                                   "seven = 1 2 3 4 5 6 7\n"        // line 9
+                                   "letter = 1 2 3 4 5 x\n"         // line 10
+                                   "pcf = 3x3\n"                    // line 11
+                                   "bad_pcf = bilinear\n"           // line 12
+                                   "shadows = off\n"                // line 13
+                                   "bad_switch = yes\n");           // line 14
+    CHECK(spec.getIntInRange("cascades", 0, 4) == 4);
+    CHECK(spec.getIntInRange("missing", 0, 4, 9) == 9);  // the fallback is the lab's, not checked
+    CHECK(spec.getNumberInRange("lambda", 0.0, 1.0) == 0.75);
+    CHECK(spec.getNumbers("sun", 6, "direction, colour") == std::vector<float>{1.0f, -2.0f, 0.5f, 1.0f, 0.9f, 0.8f});
+    CHECK(spec.getChoice("pcf", {"single", "2x2", "3x3"}) == "3x3");
+    CHECK(spec.getChoice("missing", {"single", "2x2"}, std::string("single")) == "single");
+    CHECK_FALSE(spec.getSwitch("shadows", true));
+    CHECK(spec.getSwitch("missing", true));
+
+    struct Bad {
+        std::function<void()> read;
+        int line;
+        std::string message;
+    };
+    const Bad bad[] = {
+        {[&] { spec.getIntInRange("too_many", 0, 4); }, 4, "expected an integer from 0 to 4 for 'too_many', got '7'"},
+        {[&] { spec.getIntInRange("too_many", 0, 4, 0); }, 4, "expected an integer from 0 to 4 for 'too_many', got '7'"},
+        {[&] { spec.getNumberInRange("too_big", 0.0, 1.0); }, 6, "expected a number from 0 to 1 for 'too_big', got '1.5'"},
+        {[&] { spec.getNumberInRange("lambda", 0.8, 2.5); }, 5, "expected a number from 0.8 to 2.5 for 'lambda', got '0.75'"},
+        {[&] { spec.getNumbers("five", 6, "direction x y z, colour r g b"); }, 8,
+         "expected six numbers (direction x y z, colour r g b) for 'five', got '1 2 3 4 5'"},
+        {[&] { spec.getNumbers("seven", 6, "direction x y z, colour r g b"); }, 9,
+         "expected six numbers (direction x y z, colour r g b) for 'seven', got '1 2 3 4 5 6 7'"},
+        {[&] { spec.getNumbers("letter", 6, ""); }, 10, "expected six numbers for 'letter', got '1 2 3 4 5 x'"},
+        {[&] { spec.getNumbers("missing", 2, "near far"); }, 2,
+         "case 'test' needs a 'missing = ...' line with two numbers (near far)"},
+        {[&] { spec.getChoice("bad_pcf", {"single", "2x2", "3x3"}); }, 12,
+         "expected single, 2x2 or 3x3 for 'bad_pcf', got 'bilinear'"},
+        {[&] { spec.getSwitch("bad_switch", false); }, 14, "expected on or off for 'bad_switch', got 'yes'"},
+        {[&] { spec.reject("pcf", "pcf needs shadows"); }, 11, "case 'test': pcf needs shadows"},
+        {[&] { spec.reject("missing", "something is wrong"); }, 2, "case 'test': something is wrong"},
     };
     for (const Bad& each : bad) {
         INFO(each.message);

@@ -29,34 +29,34 @@ void CameraRig::toggle() {
 }
 
 void CameraRig::loadCase(const CaseSpec& spec) {
-    const std::string kind = spec.getString("camera", std::string("orbit"));
-    const float fov = static_cast<float>(spec.getNumber("fov", 50.0));
+    const std::string kind = spec.getChoice("camera", {"orbit", "first_person"}, std::string("orbit"));
+    const float fov = static_cast<float>(spec.getNumberInRange("fov", 1.0, 179.0, 50.0));
     const float near = static_cast<float>(spec.getNumber("near", 0.1));
     const float far = static_cast<float>(spec.getNumber("far", 100.0));
-    if (!(fov > 0.0f && fov < 180.0f) || !(near > 0.0f && near < far))
-        throw InputError(spec.file, spec.line,
-                         "case '" + spec.name + "': need 0 < fov < 180 and 0 < near < far");
+    if (!(near > 0.0f)) spec.reject("near", "near must be greater than 0");
+    if (!(far > near)) spec.reject("far", "far must be greater than near");
     if (kind == "orbit") {
         const float distance = static_cast<float>(spec.getNumber("distance", 6.0));
-        const float pitch = static_cast<float>(spec.getNumber("pitch", 20.0));
-        if (!(distance > 0.0f) || std::abs(pitch) > 89.0f)
-            throw InputError(spec.file, spec.line,
-                             "case '" + spec.name + "': need distance > 0 and pitch in [-89, 89]");
+        if (!(distance > 0.0f)) spec.reject("distance", "distance must be greater than 0");
+        const float pitch = static_cast<float>(spec.getNumberInRange("pitch", -89.0, 89.0, 20.0));
         orbit = OrbitCamera(spec.getVec3("target", glm::vec3(0.0f)), distance,
                             static_cast<float>(spec.getNumber("yaw", 30.0)), pitch);
         orbit.setProjection(fov, near, far);
         m_orbitActive = true;
-    } else if (kind == "first_person") {
+    } else {
         firstPerson = FirstPersonCamera(spec.getVec3("position", glm::vec3(0.0f, 1.5f, 6.0f)),
                                         static_cast<float>(spec.getNumber("yaw", 0.0)),
-                                        static_cast<float>(spec.getNumber("pitch", 0.0)));
+                                        static_cast<float>(spec.getNumberInRange("pitch", -89.0, 89.0, 0.0)));
         firstPerson.setProjection(fov, near, far);
         m_orbitActive = false;
-    } else {
-        throw InputError(spec.file, spec.line,
-                         "case '" + spec.name + "': camera must be orbit or first_person, not '" + kind + "'");
     }
-    if (spec.has("input")) applyInput(spec.getString("input"), spec.file, spec.line);
+    if (spec.has("input")) {
+        try {
+            applyInput(spec.getString("input"), spec.file, spec.line);
+        } catch (const InputError& error) {
+            spec.reject("input", error.message());  // at the line of the input key
+        }
+    }
 }
 
 void CameraRig::applyInput(const std::string& script, const std::string& file, int line) {

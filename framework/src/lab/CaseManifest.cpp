@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <locale>
 #include <sstream>
 
@@ -260,6 +261,75 @@ glm::vec3 CaseSpec::getVec3(const std::string& key, std::optional<glm::vec3> fal
     if (parts.size() != 3 || !parseNumber(parts[0], x) || !parseNumber(parts[1], y) || !parseNumber(parts[2], z))
         fail(*parameter, key, "three numbers");
     return {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
+}
+
+namespace {
+
+std::string formatNumber(double value) {
+    std::ostringstream text;
+    text.imbue(std::locale::classic());
+    text << value;
+    return text.str();
+}
+
+} // namespace
+
+double CaseSpec::getNumberInRange(const std::string& key, double min, double max,
+                                  std::optional<double> fallback) const {
+    const double value = getNumber(key, fallback);
+    const Parameter* parameter = find(key);
+    if (parameter && (value < min || value > max))
+        fail(*parameter, key, "a number from " + formatNumber(min) + " to " + formatNumber(max));
+    return value;
+}
+
+int CaseSpec::getIntInRange(const std::string& key, int min, int max, std::optional<int> fallback) const {
+    const int value = getInt(key, fallback);
+    const Parameter* parameter = find(key);
+    if (parameter && (value < min || value > max))
+        fail(*parameter, key, "an integer from " + std::to_string(min) + " to " + std::to_string(max));
+    return value;
+}
+
+std::vector<float> CaseSpec::getNumbers(const std::string& key, std::size_t count, const std::string& meaning) const {
+    const char* const counts[] = {"no numbers", "one number", "two numbers", "three numbers", "four numbers",
+                                  "five numbers", "six numbers", "seven numbers", "eight numbers", "nine numbers"};
+    const std::string expected =
+        (count < std::size(counts) ? std::string(counts[count]) : std::to_string(count) + " numbers") +
+        (meaning.empty() ? "" : " (" + meaning + ")");
+    const Parameter* parameter = find(key);
+    if (!parameter) throw InputError(file, line, "case '" + name + "' needs a '" + key + " = ...' line with " + expected);
+    const std::vector<std::string> parts = words(parameter->value);
+    std::vector<float> values;
+    for (const std::string& part : parts) {
+        double value = 0.0;
+        if (!parseNumber(part, value)) fail(*parameter, key, expected);
+        values.push_back(static_cast<float>(value));
+    }
+    if (values.size() != count) fail(*parameter, key, expected);
+    return values;
+}
+
+std::string CaseSpec::getChoice(const std::string& key, const std::vector<std::string>& choices,
+                                std::optional<std::string> fallback) const {
+    const std::string value = getString(key, fallback);
+    if (std::find(choices.begin(), choices.end(), value) != choices.end()) return value;
+    std::string expected;
+    for (std::size_t i = 0; i < choices.size(); ++i)
+        expected += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i];
+    const Parameter* parameter = find(key);
+    if (!parameter) throw InputError(file, line, "case '" + name + "': the fallback '" + value + "' for '" + key +
+                                                     "' is not one of " + expected);
+    fail(*parameter, key, expected);
+}
+
+bool CaseSpec::getSwitch(const std::string& key, bool fallback) const {
+    return getChoice(key, {"on", "off"}, std::string(fallback ? "on" : "off")) == "on";
+}
+
+void CaseSpec::reject(const std::string& key, const std::string& message) const {
+    const Parameter* parameter = find(key);
+    throw InputError(file, parameter ? parameter->line : line, "case '" + name + "': " + message);
 }
 
 void CaseSpec::requireAllKeysUsed() const {

@@ -57,6 +57,22 @@ public:
     double getNumber(const std::string& key, std::optional<double> fallback = std::nullopt) const;
     int getInt(const std::string& key, std::optional<int> fallback = std::nullopt) const;
     glm::vec3 getVec3(const std::string& key, std::optional<glm::vec3> fallback = std::nullopt) const;
+    /// A number (an integer) from `min` to `max`, both included; the fallback is not checked.
+    double getNumberInRange(const std::string& key, double min, double max,
+                            std::optional<double> fallback = std::nullopt) const;
+    int getIntInRange(const std::string& key, int min, int max, std::optional<int> fallback = std::nullopt) const;
+    /// Exactly `count` numbers separated by blanks; `meaning` names them for the error,
+    /// e.g. getNumbers("sun", 6, "direction x y z, colour r g b").
+    std::vector<float> getNumbers(const std::string& key, std::size_t count, const std::string& meaning) const;
+    /// One of `choices` ("single", "2x2", "3x3"); any other value is an error that lists them.
+    std::string getChoice(const std::string& key, const std::vector<std::string>& choices,
+                          std::optional<std::string> fallback = std::nullopt) const;
+    /// "on" or "off".
+    bool getSwitch(const std::string& key, bool fallback) const;
+    /// For what the getters cannot check alone (two keys that exclude each other, a
+    /// value outside a list the lab builds): throws InputError at the line of `key`,
+    /// or of the case's header where the case does not set `key`.
+    [[noreturn]] void reject(const std::string& key, const std::string& message) const;
     /// Throws InputError naming the first key (in file order) that neither has() nor a
     /// getter has asked for: a typo in the manifest. Call it after reading the case.
     void requireAllKeysUsed() const;
