@@ -23,7 +23,6 @@
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/Texture2D.hpp>
-#include <stoa/gl/TextureCache.hpp>
 #include <stoa/image/HeightMap.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
@@ -186,12 +185,6 @@ private:
             object.scale = scale;
             object.normalMap = std::move(map);
         };
-        // Load the wall's diffuse map now rather than at its first draw: creating
-        // a texture binds it on the active unit, which would replace the normal
-        // map that draw() has just bound.
-        // (The cache holds textures weakly: keep this one alive.)
-        if (!m_wall.material.diffuseMap.empty() && !m_wallDiffuse)
-            m_wallDiffuse = stoa::TextureCache::shared().load(m_wall.material.diffuseMap);
         // wall.obj spans x in [-4, 4], y in [0, 3], z in [-0.3, 0.3].
         add(m_floorMesh, ground, "floor", {0.0f, 0.0f, 0.0f}, 0.0f, {16.0f, 1.0f, 16.0f}, nullptr);
         add(m_wallMesh, m_wall.material, "wall", {-1.5f, 0.0f, -1.0f}, 0.0f, glm::vec3(0.5f), normalMap);
@@ -203,7 +196,6 @@ private:
     stoa::Image m_height;
     std::shared_ptr<const stoa::GpuMesh> m_wallMesh, m_mirroredMesh, m_boulderMesh, m_floorMesh;
     std::map<float, std::shared_ptr<const stoa::Texture2D>> m_normalMaps;
-    std::shared_ptr<const stoa::Texture2D> m_wallDiffuse;
     std::optional<std::string> m_missing;  // the student function that has not run yet
     View m_view = View::Shaded;
     bool m_normalMapping = true;

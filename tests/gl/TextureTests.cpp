@@ -146,3 +146,25 @@ TEST_CASE("Texture2D: empty storage, moves and release") {
     glDeleteTextures(1, &released);
     CHECK(glGetError() == GL_NO_ERROR);
 }
+
+TEST_CASE("Texture2D: creating a texture leaves the texture units' bindings alone") {
+    // A lab binds a normal map on unit 2, then MeshObject loads a diffuse map at
+    // its first draw: that must not unbind the normal map.
+    HeadlessContext context;
+    Image pixel(1, 1, 4);
+    const Texture2D bound = Texture2D::fromImage(pixel, nearestClamped());
+    bound.bind(2);
+    const Texture2D fromImage = Texture2D::fromImage(pixel, nearestClamped());
+    const Texture2D empty = Texture2D::empty(4, 4, GL_DEPTH_COMPONENT24);
+    GLint active = 0, onUnit2 = 0, onUnit0 = 0;
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &onUnit2);
+    CHECK(active == GL_TEXTURE2);
+    CHECK(static_cast<GLuint>(onUnit2) == bound.id());
+    glActiveTexture(GL_TEXTURE0);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &onUnit0);
+    CHECK(onUnit0 == 0);
+    CHECK(fromImage.id() != bound.id());
+    CHECK(empty.id() != 0);
+    CHECK(glGetError() == GL_NO_ERROR);
+}

@@ -50,6 +50,20 @@ GLenum transferTypeFor(GLenum format) {
     return GL_UNSIGNED_BYTE;
 }
 
+// Creating a texture has to bind it; this puts back what the active unit had,
+// so that making a texture never unbinds one a caller bound a moment before
+// (a normal map on unit 2, then a diffuse map loaded at its first draw).
+class KeepTextureBinding {
+public:
+    KeepTextureBinding() { glGetIntegerv(GL_TEXTURE_BINDING_2D, &m_previous); }
+    ~KeepTextureBinding() { glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(m_previous)); }
+    KeepTextureBinding(const KeepTextureBinding&) = delete;
+    KeepTextureBinding& operator=(const KeepTextureBinding&) = delete;
+
+private:
+    GLint m_previous = 0;
+};
+
 } // namespace
 
 void Texture2D::create(int width, int height, GLenum internalFormat) {
@@ -82,6 +96,7 @@ Texture2D Texture2D::fromImage(const Image& image, const TextureOptions& options
         std::memcpy(bottomUp.data() + rowBytes * static_cast<std::size_t>(image.height() - 1 - row),
                     image.data() + rowBytes * static_cast<std::size_t>(row), rowBytes);
 
+    const KeepTextureBinding keep;
     Texture2D texture;
     texture.create(image.width(), image.height(), format.internalFormat);
     STOA_GL_CALL(glPixelStorei(GL_UNPACK_ALIGNMENT, 1)); // rows of 3-channel images are not 4-byte aligned
@@ -106,6 +121,7 @@ Texture2D Texture2D::fromFile(const std::filesystem::path& path, const TextureOp
 Texture2D Texture2D::empty(int width, int height, GLenum internalFormat, const TextureOptions& options) {
     STOA_ASSERT(width > 0 && height > 0, "Texture2D::empty(): width and height must be positive.");
     const PixelFormat format = transferFormatFor(internalFormat);
+    const KeepTextureBinding keep;
     Texture2D texture;
     texture.create(width, height, internalFormat);
     STOA_GL_CALL(glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), width, height, 0, format.format,

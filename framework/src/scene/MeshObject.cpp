@@ -35,8 +35,6 @@ void MeshObject::draw(const Program& program) const {
     program.set("uMaterial.diffuse", material.diffuse);
     program.set("uMaterial.specular", material.specular);
     program.set("uMaterial.shininess", material.shininess);
-    // Load every map before binding any: creating a texture binds it to the
-    // active unit, which would replace a map bound there a moment before.
     refreshMap(material.diffuseMap, m_diffuseMap);
     refreshMap(material.specularMap, m_specularMap);
     bindMap(program, m_diffuseMap, kDiffuseMapUnit, "uDiffuseMap", "uHasDiffuseMap");

@@ -32,7 +32,8 @@ public:
     /// Uploads `image`: 1 channel -> GL_R8 sampled as grey (r = g = b, a = 1),
     /// 2 -> GL_RG8 sampled as grey and alpha, 3 -> GL_RGB8, 4 -> GL_RGBA8.
     /// Asserts that the image is not empty. Like every creation function here,
-    /// it leaves the new texture bound to the active texture unit.
+    /// it leaves every texture unit's binding as it found it: bind() the new
+    /// texture to use it.
     static Texture2D fromImage(const Image& image, const TextureOptions& options = {});
     /// Image::load(path) then fromImage(); InputError when the file is missing or does not decode.
     static Texture2D fromFile(const std::filesystem::path& path, const TextureOptions& options = {});
