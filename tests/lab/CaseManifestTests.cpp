@@ -49,6 +49,25 @@ CaseSpec caseWith(const std::string& lines) {
     return manifest.cases.at(0);
 }
 
+// A getter call that must throw InputError at `line` of cases.ini with `message`.
+struct BadRead {
+    std::function<void()> read;
+    int line;
+    std::string message;
+};
+
+template <std::size_t N>
+void checkBadReads(const BadRead (&bad)[N]) {
+    for (const BadRead& each : bad) {
+        INFO(each.message);
+        const auto error = inputErrorFrom(each.read);
+        REQUIRE(error);
+        CHECK(error->file() == "cases.ini");
+        CHECK(error->line() == each.line);
+        CHECK(error->message() == each.message);
+    }
+}
+
 } // namespace
 
 TEST_CASE("loadManifest: reads a complete manifest", "[lab][manifest]") {
@@ -229,12 +248,7 @@ TEST_CASE("CaseSpec getters: values, fallbacks and errors with the key's line", 
     CHECK(spec.getVec3("missing", glm::vec3(1.0f)) == glm::vec3(1.0f));
     CHECK(spec.getNumber("distance", 9.0) == 2.5);
 
-    struct Bad {
-        std::function<void()> read;
-        int line;
-        std::string message;
-    };
-    const Bad bad[] = {
+    const BadRead bad[] = {
         {[&] { spec.getNumber("bad_number"); }, 4, "expected a number for 'bad_number', got '1.5x'"},
         {[&] { spec.getNumber("bad_number", 1.0); }, 4, "expected a number for 'bad_number', got '1.5x'"},
         {[&] { spec.getNumber("empty"); }, 11, "expected a number for 'empty', got ''"},
@@ -249,14 +263,7 @@ TEST_CASE("CaseSpec getters: values, fallbacks and errors with the key's line", 
         {[&] { spec.getInt("missing"); }, 2, "case 'test' needs a 'missing = INTEGER' line"},
         {[&] { spec.getVec3("missing"); }, 2, "case 'test' needs a 'missing = X Y Z' line"},
     };
-    for (const Bad& each : bad) {
-        INFO(each.message);
-        const auto error = inputErrorFrom(each.read);
-        REQUIRE(error);
-        CHECK(error->file() == "cases.ini");
-        CHECK(error->line() == each.line);
-        CHECK(error->message() == each.message);
-    }
+    checkBadReads(bad);
 }
 
 TEST_CASE("CaseSpec checked getters: ranges, lists of numbers, choices and switches", "[lab][manifest]") {
@@ -281,12 +288,7 @@ TEST_CASE("CaseSpec checked getters: ranges, lists of numbers, choices and switc
     CHECK_FALSE(spec.getSwitch("shadows", true));
     CHECK(spec.getSwitch("missing", true));
 
-    struct Bad {
-        std::function<void()> read;
-        int line;
-        std::string message;
-    };
-    const Bad bad[] = {
+    const BadRead bad[] = {
         {[&] { spec.getIntInRange("too_many", 0, 4); }, 4, "expected an integer from 0 to 4 for 'too_many', got '7'"},
         {[&] { spec.getIntInRange("too_many", 0, 4, 0); }, 4, "expected an integer from 0 to 4 for 'too_many', got '7'"},
         {[&] { spec.getNumberInRange("too_big", 0.0, 1.0); }, 6, "expected a number from 0 to 1 for 'too_big', got '1.5'"},
@@ -304,14 +306,7 @@ TEST_CASE("CaseSpec checked getters: ranges, lists of numbers, choices and switc
         {[&] { spec.reject("pcf", "pcf needs shadows"); }, 11, "case 'test': pcf needs shadows"},
         {[&] { spec.reject("missing", "something is wrong"); }, 2, "case 'test': something is wrong"},
     };
-    for (const Bad& each : bad) {
-        INFO(each.message);
-        const auto error = inputErrorFrom(each.read);
-        REQUIRE(error);
-        CHECK(error->file() == "cases.ini");
-        CHECK(error->line() == each.line);
-        CHECK(error->message() == each.message);
-    }
+    checkBadReads(bad);
 }
 
 TEST_CASE("CaseSpec: numbers do not depend on odd spellings", "[lab][manifest]") {
