@@ -28,6 +28,18 @@ std::string errorReason(const ProcessOutcome& process) {
     return reason;
 }
 
+// Whatever else it did, a program that leaves processes behind fails: one of
+// them could rewrite the reports after the grader has written them.
+std::string strayReason(const ProcessOutcome& process) {
+    std::size_t count = process.strayProcesses;
+    std::string reason = "the lab program left " + std::to_string(count) +
+                         (count == 1 ? " process" : " processes") + " running after it " +
+                         (process.ending == ProcessEnding::Exited ? "exited" : "ended") +
+                         " (killed); a lab program may not leave processes behind";
+    if (!process.exitedWith(0)) reason += " (it " + process.describe() + ")";
+    return reason;
+}
+
 // "references/01_transforms/orbit_front.png, ..." (the last three path components).
 std::string changedList(const std::vector<std::filesystem::path>& files) {
     std::string list;
@@ -67,6 +79,10 @@ RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings) {
             argv.push_back(job.casesFile.string());
         }
         outcome.process = runProcess(argv, job.workDir, settings.limits);
+        if (outcome.process.strayProcesses > 0) {
+            outcome.reason = strayReason(outcome.process);
+            return outcome;
+        }
 
         if (outcome.process.exitedWith(kExitNotAttempted)) {
             outcome.status = GradeStatus::NotAttempted;

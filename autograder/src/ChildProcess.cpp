@@ -1,11 +1,13 @@
 #include "ChildProcess.hpp"
 
 #include "ProcessContainment.hpp"
+#include "StrayProcesses.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <mutex>
 #include <csignal>
 #include <cstring>
 #include <sstream>
@@ -35,30 +37,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The process groups of the running children, for the interrupt handler: a
-// fixed array of atomics, since a signal handler may not take a lock.
-constexpr std::size_t kMaxRunning = 512;
-std::atomic<pid_t> g_running[kMaxRunning];
-
-void registerChild(pid_t pid) {
-    for (std::atomic<pid_t>& slot : g_running) {
-        pid_t empty = 0;
-        if (slot.compare_exchange_strong(empty, pid)) return;
-    }
-}
-
-void unregisterChild(pid_t pid) {
-    for (std::atomic<pid_t>& slot : g_running) {
-        pid_t expected = pid;
-        if (slot.compare_exchange_strong(expected, 0)) return;
-    }
-}
-
 extern "C" void killChildrenAndExit(int signal) {
-    for (std::atomic<pid_t>& slot : g_running) {
-        pid_t pid = slot.load();
-        if (pid > 0) kill(-pid, SIGKILL);
-    }
+    killRegisteredChildren();
     // End the way the signal would have ended us, so the shell sees it.
     struct sigaction defaultAction {};
     defaultAction.sa_handler = SIG_DFL;
@@ -153,6 +133,7 @@ struct ChildSetup {
     std::vector<char*> envp;
     std::string workDir;
     int unshareFlags = 0;
+    int descriptorLimit = static_cast<int>(std::min<long>(sysconf(_SC_OPEN_MAX), 1 << 16));
     // In a new user namespace the child maps the grader's own uid and gid onto
     // themselves (the lines for /proc/self/uid_map and gid_map, made before the
     // fork). Unmapped, it would run as "nobody", and Mesa, unable to use the
@@ -198,7 +179,64 @@ void writeProcFile(const char* path, const std::string& text) {
     close(fd);
 }
 
-[[noreturn]] void runChild(const ChildSetup& setup, int outputFd, int errorFd) {
+// The program's side: the work folder, the limits, exec. On failure the grader
+// learns the step (0: chdir, 1: exec or fork) and errno through `errorFd`.
+[[noreturn]] void execProgram(const ChildSetup& setup, int errorFd) {
+    int failure[2] = {0, 0};
+    if (!setup.workDir.empty() && chdir(setup.workDir.c_str()) != 0) {
+        failure[1] = errno;
+    } else {
+        for (const ChildSetup::Limit& limit : setup.limits) setrlimit(limit.resource, &limit.value);
+        execve(setup.argv[0], setup.argv.data(), setup.envp.data());
+        failure[0] = 1;
+        failure[1] = errno;
+    }
+    ssize_t written = write(errorFd, failure, sizeof failure);
+    (void)written;
+    _exit(127);
+}
+
+[[noreturn]] void reportForkFailure(int errorFd) {
+    int failure[2] = {1, errno};
+    ssize_t written = write(errorFd, failure, sizeof failure);
+    (void)written;
+    _exit(127);
+}
+
+// Process 1 of the child's own PID namespace. It starts the program as process
+// 2 and waits for it; then whatever the program left in the namespace (a
+// setsid() daemon cannot leave a PID namespace) is killed and reaped, and the
+// grader gets the program's wait status and how many were still running
+// through `reportFd`. Were this process to die, the kernel would kill the rest
+// of the namespace too; the program cannot kill it (a namespace's process 1
+// ignores the signals its namespace sends it without a handler, SIGKILL included).
+[[noreturn]] void runNamespaceInit(const ChildSetup& setup, int errorFd, int reportFd) {
+    pid_t program = fork();
+    if (program == 0) execProgram(setup, errorFd);
+    if (program < 0) reportForkFailure(errorFd);
+    close(errorFd);
+    close(STDOUT_FILENO);
+    close(STDERR_FILENO);
+    int status = 0;
+    while (waitpid(program, &status, 0) < 0 && errno == EINTR) {
+    }
+    // Children that ended before the program did were not left running.
+    while (waitpid(-1, nullptr, WNOHANG) > 0) {
+    }
+    int left = 0;
+    if (kill(-1, SIGKILL) == 0) {   // every process of the namespace but this one
+        for (;;) {
+            if (waitpid(-1, nullptr, 0) > 0) ++left;
+            else if (errno != EINTR) break;
+        }
+    }
+    int report[2] = {status, left};
+    ssize_t written = write(reportFd, report, sizeof report);
+    (void)written;
+    _exit(0);
+}
+
+[[noreturn]] void runChild(const ChildSetup& setup, int outputFd, int errorFd, int reportFd) {
     setpgid(0, 0);
     sigset_t none;
     sigemptyset(&none);
@@ -216,35 +254,51 @@ void writeProcFile(const char* path, const std::string& text) {
     }
     dup2(outputFd, STDOUT_FILENO);
     dup2(outputFd, STDERR_FILENO);
+    // Descriptors the grader inherited from its own parent, or opened without
+    // O_CLOEXEC in another thread (a report being written), stay out of the lab
+    // program: close-on-exec for everything past stderr. close_range needs Linux
+    // 5.11; before it, every descriptor up to the limit is marked one by one.
+    bool marked = false;
 #ifdef SYS_close_range
-    // Descriptors the grader inherited from its own parent stay out of the lab
-    // program: close-on-exec for everything past stderr (Linux 5.11; ignored before).
     constexpr unsigned kCloseRangeCloexec = 1u << 2;
-    syscall(SYS_close_range, 3u, ~0u, kCloseRangeCloexec);
+    marked = syscall(SYS_close_range, 3u, ~0u, kCloseRangeCloexec) == 0;
 #endif
+    if (!marked)
+        for (int fd = 3; fd < setup.descriptorLimit; ++fd) fcntl(fd, F_SETFD, FD_CLOEXEC);
 
     // No network: a fresh network namespace has only a loopback device, and it is
     // down. Before the limits, so that the new user namespace records the grader's
     // RLIMIT_NPROC for its parent level and the child's own applies inside it.
-    if (setup.unshareFlags != 0 && unshare(setup.unshareFlags) == 0 && (setup.unshareFlags & CLONE_NEWUSER)) {
-        writeProcFile("/proc/self/setgroups", "deny\n");   // required before gid_map
-        writeProcFile("/proc/self/uid_map", setup.uidMap);
-        writeProcFile("/proc/self/gid_map", setup.gidMap);
+    bool ownPids = false;
+    if (setup.unshareFlags != 0 && unshare(setup.unshareFlags) == 0) {
+        if (setup.unshareFlags & CLONE_NEWUSER) {
+            writeProcFile("/proc/self/setgroups", "deny\n");   // required before gid_map
+            writeProcFile("/proc/self/uid_map", setup.uidMap);
+            writeProcFile("/proc/self/gid_map", setup.gidMap);
+        }
+        ownPids = (setup.unshareFlags & CLONE_NEWPID) != 0;
     }
+    if (!ownPids) execProgram(setup, errorFd);
 
-    // On failure the parent learns the step (0: chdir, 1: exec) and errno.
-    int failure[2] = {0, 0};
-    if (!setup.workDir.empty() && chdir(setup.workDir.c_str()) != 0) {
-        failure[1] = errno;
-    } else {
-        for (const ChildSetup::Limit& limit : setup.limits) setrlimit(limit.resource, &limit.value);
-        execve(setup.argv[0], setup.argv.data(), setup.envp.data());
-        failure[0] = 1;
-        failure[1] = errno;
+    // unshare(CLONE_NEWPID) puts this process's next child, not itself, in the new
+    // namespace: that child is the namespace's process 1. This process waits for
+    // it and ends the way it ended, so that the grader sees a killed init as killed.
+    pid_t init = fork();
+    if (init == 0) runNamespaceInit(setup, errorFd, reportFd);
+    if (init < 0) reportForkFailure(errorFd);
+    close(errorFd);
+    close(reportFd);
+    close(STDOUT_FILENO);
+    close(STDERR_FILENO);
+    int status = 0;
+    while (waitpid(init, &status, 0) < 0 && errno == EINTR) {
     }
-    ssize_t written = write(errorFd, failure, sizeof failure);
-    (void)written;
-    _exit(127);
+    if (WIFSIGNALED(status)) {
+        rlimit noCore{0, 0};
+        setrlimit(RLIMIT_CORE, &noCore);
+        kill(getpid(), WTERMSIG(status));
+    }
+    _exit(WIFEXITED(status) ? WEXITSTATUS(status) : 127);
 }
 
 bool childHasEnded(pid_t pid) {
@@ -254,6 +308,12 @@ bool childHasEnded(pid_t pid) {
     // cannot be reused before we kill what is left of the group.
     if (waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT) != 0) return errno == ECHILD;
     return info.si_pid == pid;
+}
+
+void waitForEnd(pid_t pid) {
+    siginfo_t info{};
+    while (waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOWAIT) != 0 && errno == EINTR) {
+    }
 }
 
 int reap(pid_t pid) {
@@ -311,7 +371,11 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
     if (limits.fileSizeBytes > 0) setup.addLimit(RLIMIT_FSIZE, limits.fileSizeBytes);
     setup.addLimit(RLIMIT_CORE, 0);
     setup.setEnvironment(limits.environment);
-    if (limits.isolateNetwork) setup.unshareFlags = networkIsolationFlags();
+    setup.unshareFlags = isolationFlags(limits.isolateNetwork, limits.ownPidNamespace);
+    const bool ownPids = (setup.unshareFlags & CLONE_NEWPID) != 0;
+    // The child and its namespace's process 1 are in the group beside the program.
+    const std::size_t helpers = ownPids ? 2 : 0;
+    becomeSubreaper();
     // RLIMIT_NPROC counts every task of the user; in the child's own user namespace
     // only the child's. It does not bind root: the watchdog below is the guard there.
     if (limits.maxTasks > 0 && getuid() != 0) {
@@ -321,23 +385,29 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
 
     Pipe output;
     Pipe execStatus;
-    if (!output.valid() || !execStatus.valid()) {
+    Pipe report;   // from the namespace's process 1: the program's wait status, and what it left
+    if (!output.valid() || !execStatus.valid() || !report.valid()) {
         outcome.startError = std::string("could not create a pipe: ") + std::strerror(errno);
         return outcome;
     }
 
     Clock::time_point start = Clock::now();
-    pid_t pid = fork();
+    pid_t pid = 0;
+    {
+        std::lock_guard<std::mutex> starting(childStartMutex());
+        pid = fork();
+        if (pid == 0) runChild(setup, output.writeEnd(), execStatus.writeEnd(), report.writeEnd());
+        if (pid > 0) registerChild(pid);
+    }
     if (pid < 0) {
         outcome.startError = std::string("could not fork: ") + std::strerror(errno);
         return outcome;
     }
-    if (pid == 0) runChild(setup, output.writeEnd(), execStatus.writeEnd());
 
     setpgid(pid, pid); // also done by the child; whichever runs first wins the race
-    registerChild(pid);
     output.closeWrite();
     execStatus.closeWrite();
+    report.closeWrite();
 
     // The status pipe closes on a successful exec (close-on-exec) and carries
     // the failing step and errno otherwise.
@@ -348,6 +418,7 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
     if (got == static_cast<ssize_t>(sizeof failure)) {
         reap(pid);
         unregisterChild(pid);
+        killStrayProcesses(pid);
         outcome.startError = failure[0] == 0
             ? "could not enter the work directory " + setup.workDir + ": " + std::strerror(failure[1])
             : "could not start " + argv[0] + ": " + std::strerror(failure[1]);
@@ -356,8 +427,15 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
     }
 
     fcntl(output.readEnd(), F_SETFL, fcntl(output.readEnd(), F_GETFL) | O_NONBLOCK);
+    fcntl(report.readEnd(), F_SETFL, fcntl(report.readEnd(), F_GETFL) | O_NONBLOCK);
     OutputCapture capture(limits.outputLimitBytes);
     bool pipeOpen = true;
+    // With its own PID namespace, the program's ending and what it left there
+    // come from the namespace's process 1 (its wait status, the count); without
+    // a report (the init was killed), from the child.
+    bool reportOpen = ownPids;
+    int fromInit[2] = {0, 0};
+    bool reported = false;
     bool timedOut = false;
     bool tooManyProcesses = false;
     Clock::time_point lastCount = start;
@@ -370,27 +448,55 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
         // Wake at least every 25 ms to notice a child that exited while a
         // grandchild still holds the pipe open.
         int waitMs = static_cast<int>(std::min(remaining * 1000.0 + 1.0, 25.0));
-        pollfd entry{output.readEnd(), POLLIN, 0};
-        poll(pipeOpen ? &entry : nullptr, pipeOpen ? 1 : 0, waitMs);
+        pollfd entries[2];
+        nfds_t count = 0;
+        if (pipeOpen) entries[count++] = {output.readEnd(), POLLIN, 0};
+        if (reportOpen) entries[count++] = {report.readEnd(), POLLIN, 0};
+        poll(entries, count, waitMs);
         if (pipeOpen) pipeOpen = drain(output.readEnd(), capture);
+        if (reportOpen) {
+            ssize_t got = read(report.readEnd(), fromInit, sizeof fromInit);
+            reported = got == static_cast<ssize_t>(sizeof fromInit);
+            if (got >= 0) reportOpen = false;
+            // The report is the init's last act: the child ends right after it.
+            if (reported) {
+                waitForEnd(pid);
+                break;
+            }
+        }
         if (childHasEnded(pid)) break;
         // The fork-bomb watchdog, ten times a second (it reads /proc).
         if (limits.maxProcesses > 0 && Clock::now() - lastCount >= std::chrono::milliseconds(100)) {
             lastCount = Clock::now();
-            if (processGroupSize(pid) > limits.maxProcesses) {
+            if (processGroupSize(pid) > limits.maxProcesses + helpers) {
                 tooManyProcesses = true;
                 break;
             }
         }
     }
 
-    // Whatever is left of the group (the child if it timed out, grandchildren in
-    // any case) goes now; then the last output is read and the child reaped.
-    kill(-pid, SIGKILL);
-    if (timedOut || tooManyProcesses) kill(pid, SIGKILL);
+    // Whatever is left (the child if it timed out; grandchildren of its group,
+    // daemons that left the group, in any case) goes now, before the child is
+    // reaped: a zombie's pid, and so its group's id, cannot be reused meanwhile.
+    // Then the last output is read.
+    if (timedOut || tooManyProcesses) {
+        kill(-pid, SIGKILL);
+        kill(pid, SIGKILL);
+    }
+    // A namespace's process 1 that reported has killed everything the program
+    // started: nothing can leave a PID namespace. The sweep, which reads /proc,
+    // is then skipped (it would delay the end of every case a little).
+    std::size_t strays = reported ? 0 : killStrayProcesses(pid);
     int status = reap(pid);
     unregisterChild(pid);
     if (pipeOpen) drain(output.readEnd(), capture);
+
+    if (!reported && reportOpen)
+        reported = read(report.readEnd(), fromInit, sizeof fromInit) == static_cast<ssize_t>(sizeof fromInit);
+    if (reported) {
+        status = fromInit[0];
+        strays += static_cast<std::size_t>(fromInit[1]);
+    }
 
     outcome.seconds = secondsSince(start);
     outcome.output = printableText(capture.text());
@@ -406,6 +512,8 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
         outcome.ending = ProcessEnding::Exited;
         outcome.exitCode = WEXITSTATUS(status);
     }
+    // A program killed for its time or its processes has its group killed with it.
+    if (!timedOut && !tooManyProcesses) outcome.strayProcesses = strays;
     return outcome;
 }
 

@@ -6,6 +6,10 @@
 // exec. The call always returns; nothing the child does can hang the grader.
 //
 // Containment, where the system allows it (ProcessContainment.hpp):
+//   - nothing outlives the program: it runs as process 2 of its own PID
+//     namespace, whose process 1 kills what is left when the program ends; the
+//     grader is a child subreaper and kills the processes it adopts after each
+//     program (StrayProcesses.hpp); the outcome counts them (strayProcesses);
 //   - no network: the child unshares a user and a network namespace before exec;
 //   - a process count: RLIMIT_NPROC (this user's tasks now + a margin, or the
 //     margin alone inside the child's own user namespace), and a watchdog that
@@ -30,6 +34,7 @@ struct ProcessLimits {
     std::size_t maxProcesses = 32;                        // processes in the child's group, the child included
     std::size_t maxTasks = 256;                           // RLIMIT_NPROC margin: threads count (llvmpipe's ~cores)
     bool isolateNetwork = true;                           // unshare the network where the OS allows it
+    bool ownPidNamespace = true;                          // a PID namespace where the OS allows it
     std::vector<std::string> environment;                 // "NAME=value" set in the child's environment
 };
 
@@ -58,6 +63,7 @@ struct ProcessOutcome {
     std::size_t maxProcesses = 0;  // the limit it ran under, for describe()
     bool outputTruncated = false;  // true when `output` left bytes out (a marker line says how many)
     std::string startError;        // why it did not start (FailedToStart only)
+    std::size_t strayProcesses = 0;// processes it left running when it ended (all killed); 0 after a timeout
 
     bool exitedWith(int code) const { return ending == ProcessEnding::Exited && exitCode == code; }
     /// One line: "exited with status 1", "crashed with SIGSEGV (segmentation fault)",
@@ -71,7 +77,8 @@ struct ProcessOutcome {
 /// Runs `argv` (argv[0] is the program's path; no PATH search, no shell) in
 /// `workDir` (the current directory when empty) and waits for it under `limits`.
 /// The child gets its own process group; when it ends or times out, whatever is
-/// left of that group (grandchildren holding the pipe open) is killed too.
+/// left of that group (grandchildren holding the pipe open), and every process it
+/// started that left the group (a setsid() daemon), is killed too.
 /// Safe to call from several threads at once.
 ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::filesystem::path& workDir,
                           const ProcessLimits& limits);

@@ -7,6 +7,8 @@
 #include "JsonWriter.hpp"
 #include "LabCatalog.hpp"
 #include "Report.hpp"
+#include "ReportFile.hpp"
+#include "StrayProcesses.hpp"
 
 #include <stoa/core/InputError.hpp>
 #include <stoa/lab/CaseManifest.hpp>
@@ -35,7 +37,20 @@ ProcessLimits buildLimits(std::size_t outputBytes) {
     limits.maxProcesses = 0;   // make and the compiler start many; stoa-grade limits the lab programs itself
     limits.maxTasks = 0;
     limits.isolateNetwork = false;
+    // The build runs as the user, outside any namespace (a user namespace maps
+    // the groups away, which some toolchains' caches mind). What student CMake
+    // code starts and leaves running is still killed when each step ends: this
+    // program is a child subreaper (StrayProcesses.hpp), and stoa-grade contains
+    // the lab programs itself.
+    limits.ownPidNamespace = false;
     return limits;
+}
+
+// "the build of 01_transforms left 2 processes running (killed)", or "" when it left none.
+std::string strayNote(const std::string& step, const ProcessOutcome& outcome) {
+    if (outcome.strayProcesses == 0) return "";
+    return step + " left " + std::to_string(outcome.strayProcesses) +
+           (outcome.strayProcesses == 1 ? " process" : " processes") + " running (killed)";
 }
 
 void writeText(const std::filesystem::path& path, const std::string& text) {
@@ -174,7 +189,7 @@ void addBuildFailures(const std::filesystem::path& resultsJson, const StudentGra
     for (const auto& entry : messages) output += "lab " + entry.first + " does not compile (see its test)\n";
     document.set("output", JsonValue::string(output));
     document.set("tests", tests);
-    writeText(resultsJson, document.dump() + "\n");
+    writeReportFile(resultsJson, document.dump() + "\n", "the results");
 }
 
 } // namespace
@@ -280,6 +295,7 @@ StudentGrade gradeSubmission(const Submission& submission, const Framework& fram
              "-DSTOA_TRACK_DIR=" + labsDir.string()},
             studentDir, buildLimits(16384));
         writeText(studentDir / "configure.log", configure.output);
+        if (std::string note = strayNote("configure", configure); !note.empty()) grade.notes.push_back(note);
         if (!configure.exitedWith(0)) {
             grade.notes.push_back("configure failed (" + configure.describe() + "); see configure.log: " +
                                   firstError(compilerMessage(configure.output)));
@@ -299,6 +315,9 @@ StudentGrade gradeSubmission(const Submission& submission, const Framework& fram
             ProcessOutcome cascade = runProcess(
                 {framework.cmake.string(), "--build", buildDir.string(), "--target", lab + "-cascade", "-j", "1"},
                 studentDir, buildLimits(32768));
+            for (const std::string& note : {strayNote("the build of " + lab, build),
+                                            strayNote("the cascade build of " + lab, cascade)})
+                if (!note.empty()) grade.notes.push_back(note);
             LabGrade& labGrade = grade.labs[lab];
             labGrade.built = build.exitedWith(0);
             labGrade.cascadeBuilt = cascade.exitedWith(0);
@@ -328,6 +347,7 @@ StudentGrade gradeSubmission(const Submission& submission, const Framework& fram
             limits.timeoutSeconds = 60.0 + options.timeoutSeconds * 4.0 * 64;
             ProcessOutcome grading = runProcess(argv, studentDir, limits);
             writeText(studentDir / "grade.log", grading.output);
+            if (std::string note = strayNote("stoa-grade", grading); !note.empty()) grade.notes.push_back(note);
             if (!grading.exitedWith(0) || !std::filesystem::exists(studentDir / "results.json")) {
                 grade.notes.push_back("stoa-grade " + grading.describe() + "; see grade.log: " +
                                       truncated(oneLine(grading.lastOutputLine()), kNoteLength));
@@ -407,8 +427,11 @@ int runClassGrade(const ClassOptions& options, const Framework& framework, std::
         out << "  (" << finished << " of " << total << " done)" << std::endl;
     });
 
+    // Every step killed what it left; this is the last look before the gradebook.
+    if (std::size_t strays = killStrayProcesses())
+        err << "stoa-grade-class: killed " << strays << " more processes the submissions had left running\n";
     std::filesystem::path gradebook = options.outDir / "gradebook.csv";
-    writeText(gradebook, gradebookCsv(framework.labs, grades));
+    writeReportFile(gradebook, gradebookCsv(framework.labs, grades), "the gradebook");
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     out << "wrote " << gradebook.string() << " (" << total << " students, " << static_cast<int>(seconds + 0.5)
         << " s); per student: " << (options.outDir / "STUDENT").string()

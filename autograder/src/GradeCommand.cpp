@@ -7,6 +7,7 @@
 #include "JunitReport.hpp"
 #include "Report.hpp"
 #include "ResultsJson.hpp"
+#include "StrayProcesses.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -70,6 +71,11 @@ int runGrade(const Options& options, const Environment& env) {
     addHints(results, jobs, gallery, options.jobs);
     applyCascadePolicy(results);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    // Each case's leftovers were killed as it ended; this is the last look before
+    // any report is written: nothing a lab program started may be running then.
+    if (std::size_t strays = killStrayProcesses())
+        env.err << "stoa-grade: killed " << strays << " more processes the lab programs had left running\n";
 
     Totals totals = summarize(results);
     env.out << "\n";

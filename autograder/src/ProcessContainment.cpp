@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <mutex>
 
 #include <dirent.h>
@@ -70,8 +71,8 @@ std::size_t userTaskCount() {
     return tasks;
 }
 
-std::size_t processGroupSize(pid_t group) {
-    std::size_t members = 0;
+std::vector<ProcessEntry> processTable() {
+    std::vector<ProcessEntry> table;
     char buffer[1024];
     forEachProcess([&](const char* pid) {
         if (!readSmallFile(std::string("/proc/") + pid + "/stat", buffer, sizeof buffer)) return;
@@ -81,9 +82,21 @@ std::size_t processGroupSize(pid_t group) {
         char state = 0;
         long parent = 0;
         long pgrp = 0;
-        if (std::sscanf(close + 1, " %c %ld %ld", &state, &parent, &pgrp) == 3 && pgrp == group && state != 'Z')
-            ++members;
+        if (std::sscanf(close + 1, " %c %ld %ld", &state, &parent, &pgrp) != 3) return;
+        ProcessEntry entry;
+        entry.pid = static_cast<pid_t>(std::strtol(pid, nullptr, 10));
+        entry.parent = static_cast<pid_t>(parent);
+        entry.group = static_cast<pid_t>(pgrp);
+        entry.ended = state == 'Z' || state == 'X' || state == 'x';
+        table.push_back(entry);
     });
+    return table;
+}
+
+std::size_t processGroupSize(pid_t group) {
+    std::size_t members = 0;
+    for (const ProcessEntry& entry : processTable())
+        if (entry.group == group && !entry.ended) ++members;
     return members;
 }
 
@@ -106,6 +119,31 @@ int networkIsolationFlags() {
         else if (childCanUnshare(CLONE_NEWNET)) flags = CLONE_NEWNET;
     });
     return flags;
+}
+
+int pidNamespaceFlags() {
+    static std::once_flag probed;
+    static int flags = 0;
+    std::call_once(probed, [] {
+        if (childCanUnshare(CLONE_NEWUSER | CLONE_NEWPID)) flags = CLONE_NEWUSER | CLONE_NEWPID;
+        else if (childCanUnshare(CLONE_NEWPID)) flags = CLONE_NEWPID;
+    });
+    return flags;
+}
+
+int isolationFlags(bool network, bool pids) {
+    int networkFlags = network ? networkIsolationFlags() : 0;
+    int pidFlags = pids ? pidNamespaceFlags() : 0;
+    if (pidFlags == 0 || (networkFlags | pidFlags) == pidFlags) return networkFlags | pidFlags;
+    if (networkFlags == 0) return pidFlags;
+    // Both, e.g. CLONE_NEWNET alone (root) with CLONE_NEWUSER | CLONE_NEWPID: try the union once.
+    static std::mutex mutex;
+    static std::map<int, bool> allowed;
+    int both = networkFlags | pidFlags;
+    std::lock_guard<std::mutex> lock(mutex);
+    auto found = allowed.find(both);
+    if (found == allowed.end()) found = allowed.emplace(both, childCanUnshare(both)).first;
+    return found->second ? both : networkFlags;
 }
 
 bool childrenHaveOwnUserNamespace() { return (networkIsolationFlags() & CLONE_NEWUSER) != 0; }

@@ -1,6 +1,7 @@
 #include "ResultsJson.hpp"
 
 #include "JsonWriter.hpp"
+#include "ReportFile.hpp"
 
 #include <stoa/core/InputError.hpp>
 
@@ -95,13 +96,7 @@ std::string resultsJson(const std::vector<GradeResult>& results, const Totals& t
 
 void writeResultsJson(const std::filesystem::path& path, const std::vector<GradeResult>& results,
                       const Totals& totals, double executionSeconds, const std::string& output) {
-    std::error_code ignored;
-    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ignored);
-    std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    if (!file) throw InputError(path.string(), 0, std::string("cannot write the results: ") + std::strerror(errno));
-    file << resultsJson(results, totals, executionSeconds, output);
-    file.close();
-    if (!file) throw InputError(path.string(), 0, "cannot write the results (disk full?)");
+    writeReportFile(path, resultsJson(results, totals, executionSeconds, output), "the results");
 }
 
 } // namespace stoa::grader

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <thread>
 
 using namespace stoa::grader;
 
@@ -67,7 +68,27 @@ TEST_CASE("runProcess: a grandchild that keeps the pipe open does not hold the g
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     CHECK(outcome.exitedWith(0));
     CHECK(outcome.output == "done\n");
+    CHECK(outcome.strayProcesses == 1);   // the sleep, killed
     CHECK(seconds < 5.0);
+}
+
+TEST_CASE("runProcess: a setsid() daemon does not outlive the program, with or without a PID namespace",
+          "[grader][process]") {
+    stoa::test::TempFolder folder("daemon");
+    // Forks, leaves the group and the session, forks again, then writes after a second.
+    const std::string script = "(setsid sh -c 'sleep 1; echo forged > \"$0\"' \"$1\" &); echo started";
+    std::vector<std::filesystem::path> files;
+    for (bool ownPidNamespace : {true, false}) {
+        ProcessLimits limits = withTimeout(10.0);
+        limits.ownPidNamespace = ownPidNamespace;
+        files.push_back(folder.path() / (ownPidNamespace ? "namespace" : "subreaper"));
+        ProcessOutcome outcome = runProcess({"/bin/sh", "-c", script, "sh", files.back().string()}, {}, limits);
+        INFO("own PID namespace: " << ownPidNamespace << ", " << outcome.describe() << ": " << outcome.output);
+        CHECK(outcome.exitedWith(0));
+        CHECK(outcome.strayProcesses >= 1);   // sh -c and its sleep, as the kill finds them
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2000));
+    for (const std::filesystem::path& file : files) CHECK_FALSE(std::filesystem::exists(file));
 }
 
 TEST_CASE("runProcess: flooding stdout is truncated to a few kilobytes", "[grader][process]") {

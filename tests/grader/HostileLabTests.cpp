@@ -24,6 +24,7 @@
 #include <iterator>
 #include <map>
 #include <sstream>
+#include <thread>
 
 using namespace stoa::grader;
 using stoa::Image;
@@ -67,6 +68,47 @@ private:
     int m_fd = -1;
     int m_port = 0;
 };
+
+// The files in `folder`, by name, with their contents.
+std::map<std::string, std::string> contentsOf(const std::filesystem::path& folder) {
+    std::map<std::string, std::string> files;
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+        files[entry.path().filename().string()] = readAll(entry.path());
+    return files;
+}
+
+// The processes but this one whose environment holds `marker` (a zombie's reads empty).
+std::vector<std::string> processesWith(const std::string& marker) {
+    std::vector<std::string> found;
+    for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+        std::string pid = entry.path().filename().string();
+        if (pid.find_first_not_of("0123456789") != std::string::npos || pid == std::to_string(getpid())) continue;
+        if (readAll(entry.path() / "environ").find(marker) != std::string::npos)
+            found.push_back(pid + " " + readAll(entry.path() / "comm"));
+    }
+    return found;
+}
+
+// Sets what the daemon cases of hostile_lab read (see its header): files to
+// forge, the references, a one-second delay, and a marker to find them by.
+std::string armDaemons(const std::vector<std::filesystem::path>& targets, const std::filesystem::path& references) {
+    std::string list;
+    for (const std::filesystem::path& target : targets) list += (list.empty() ? "" : ":") + target.string();
+    std::string marker = "stoa-daemon-" + std::to_string(getpid()) + "-" +
+                         std::to_string(std::chrono::steady_clock::now().time_since_epoch().count());
+    setenv("STOA_HOSTILE_TARGETS", list.c_str(), 1);
+    setenv("STOA_HOSTILE_REFERENCES", references.c_str(), 1);
+    setenv("STOA_HOSTILE_DELAY", "1", 1);
+    setenv("STOA_HOSTILE_MARK", marker.c_str(), 1);
+    return marker;
+}
+
+void disarmDaemons() {
+    for (const char* name : {"STOA_HOSTILE_TARGETS", "STOA_HOSTILE_DELAY", "STOA_HOSTILE_MARK"}) unsetenv(name);
+}
+
+// Longer than the daemons' delay: had one survived, it would have written by then.
+void outwaitDaemons() { std::this_thread::sleep_for(std::chrono::milliseconds(2500)); }
 
 const char* const kCases[] = {"good",          "segfault",         "abort",          "infinite_loop",
                               "memory_bomb",   "fork_bomb",        "uncaught_exception", "wrong_size",
@@ -196,4 +238,109 @@ TEST_CASE("the grader writes results.json itself, after every lab program has en
     CHECK(written.find("\"score\": 1") != std::string::npos);
     CHECK(written.find("crashed with SIGSEGV") != std::string::npos);
     CHECK(out.str().find("segfault") != std::string::npos);
+}
+
+TEST_CASE("hostile daemons: a double-forked setsid() daemon is killed and fails its case",
+          "[grader][isolation]") {
+    stoa::test::TempFolder folder("hostile-daemons");
+    std::filesystem::path references = folder.path() / "references" / "99_hostile";
+    std::filesystem::create_directories(references);
+    std::filesystem::path reports = folder.path() / "reports";
+    std::vector<std::filesystem::path> targets;
+    for (const char* name : {"results.json", "report.html", "gradebook.csv"}) {
+        targets.push_back(reports / name);
+        folder.write("reports/" + std::string(name), std::string("written by the grader: ") + name + "\n");
+    }
+    std::vector<CaseJob> jobs;
+    for (const char* name : {"good", "daemon_rewrite", "daemon_refork", "daemon_stealth"}) {
+        CaseJob job;
+        job.lab = "99_hostile";
+        job.program = kHostileLab;
+        job.spec.name = name;
+        job.spec.width = 16;
+        job.spec.height = 16;
+        job.spec.points = 1;
+        job.reference = references / (std::string(name) + ".png");
+        job.workDir = folder.path() / "work" / name;
+        gradient(16, 16).savePng(job.reference);
+        jobs.push_back(job);
+    }
+    std::map<std::string, std::string> referencesBefore = contentsOf(references);
+    std::map<std::string, std::string> reportsBefore = contentsOf(reports);
+    std::string marker = armDaemons(targets, references);
+
+    // Both guards: the PID namespace (where the system allows one), and the
+    // subreaper's sweep alone (one case at a time, so that the blame is exact).
+    for (bool ownPidNamespace : {true, false}) {
+        RunSettings settings;
+        settings.limits = defaultLimits(10.0);
+        settings.limits.ownPidNamespace = ownPidNamespace;
+        auto start = std::chrono::steady_clock::now();
+        std::vector<GradeResult> results = gradeCases(jobs, settings, ownPidNamespace ? 2 : 1);
+        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        REQUIRE(results.size() == jobs.size());
+        for (const GradeResult& result : results) {
+            INFO("own PID namespace: " << ownPidNamespace << ", " << result.caseName << ": "
+                 << statusName(result.status) << ": " << result.reason);
+            if (result.caseName == "good") {
+                CHECK(result.status == GradeStatus::Passed);
+                continue;
+            }
+            CHECK(result.status == GradeStatus::Error);
+            CHECK(result.points == 0);
+            CHECK_THAT(result.reason, Catch::Matchers::StartsWith("the lab program left "));
+            CHECK_THAT(result.reason, Catch::Matchers::Contains("running after it exited (killed)"));
+        }
+        CHECK(processesWith(marker).empty());
+        CHECK(seconds < 10.0);   // nothing waited for the daemons' delay
+    }
+    outwaitDaemons();
+    disarmDaemons();
+    CHECK(processesWith(marker).empty());
+    CHECK(contentsOf(reports) == reportsBefore);
+    CHECK(contentsOf(references) == referencesBefore);
+}
+
+TEST_CASE("hostile daemons: the reports are written after every process of the lab programs has ended",
+          "[grader][isolation]") {
+    stoa::test::TempFolder folder("hostile-daemon-reports");
+    folder.write("labs/99_hostile/cases.ini",
+                 "lab = 99_hostile\ntitle = Hostile\n\n"
+                 "[case good]\nresolution = 16 16\npoints = 1\n\n"
+                 "[case daemon_rewrite]\nresolution = 16 16\npoints = 1\n\n"
+                 "[case daemon_stealth]\nresolution = 16 16\npoints = 1\n");
+    std::filesystem::path references = folder.path() / "autograder/references/99_hostile";
+    std::filesystem::create_directories(references);
+    for (const char* name : {"good", "daemon_rewrite", "daemon_stealth"})
+        gradient(16, 16).savePng(references / (std::string(name) + ".png"));
+    std::filesystem::create_directories(folder.path() / "bin");
+    std::filesystem::create_symlink(kHostileLab, folder.path() / "bin/lab99_hostile");
+    std::filesystem::path results = folder.path() / "results";
+    folder.write("results/gradebook.csv", "student,total\nsomeone,1\n");
+
+    Options options;
+    options.jsonFile = results / "results.json";
+    options.htmlFile = results / "report.html";
+    options.junitFile = results / "junit.xml";
+    options.workDir = folder.path() / "work";
+    options.timeoutSeconds = 10;
+    std::string marker = armDaemons({options.jsonFile, options.htmlFile, options.junitFile,
+                                     results / "gradebook.csv"}, references);
+    std::map<std::string, std::string> referencesBefore = contentsOf(references);
+    std::ostringstream out;
+    std::ostringstream err;
+    Environment env{folder.path(), folder.path() / "bin", out, err};
+    CHECK(runGrade(options, env) == 0);
+    std::map<std::string, std::string> written = contentsOf(results);
+    REQUIRE(written.size() == 4);   // no temporary file left beside them
+    INFO(written["results.json"]);
+    CHECK(written["results.json"].find("\"score\": 1,") != std::string::npos);
+    CHECK(written["results.json"].find("left 1 process running after it exited (killed)") != std::string::npos);
+    CHECK(written["report.html"].find("<html") != std::string::npos);
+
+    outwaitDaemons();
+    disarmDaemons();
+    CHECK(processesWith(marker).empty());
+    CHECK(contentsOf(results) == written);
+    CHECK(contentsOf(references) == referencesBefore);
 }

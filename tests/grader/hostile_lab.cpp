@@ -6,15 +6,24 @@
 //   STOA_HOSTILE_REFERENCES  a folder of reference images to overwrite
 //   STOA_HOSTILE_RESULTS     the results file to forge
 //   STOA_HOSTILE_PORT        a TCP port on 127.0.0.1 that the test listens on
+// The daemon cases (daemon_rewrite, daemon_refork, daemon_stealth, or any case
+// when STOA_HOSTILE_DAEMON names one of them) leave a process behind that, after
+// STOA_HOSTILE_DELAY seconds (default 1), overwrites with a perfect score every
+// report named by --json, --html, --junit on its ancestors' command lines, the
+// files in STOA_HOSTILE_TARGETS (':'-separated) and the references, if it is
+// still alive: the attack of issue 15, with the delay made short for the tests.
 
 #include <stoa/image/Image.hpp>
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -22,7 +31,9 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -54,6 +65,96 @@ int overwriteReferences(const std::string& output) {
     std::ofstream(std::filesystem::path(environment("STOA_HOSTILE_REFERENCES")) / "planted.png") << "x";
     wrong.savePng(output);
     return 0;
+}
+
+std::string readFile(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+// The reports the ancestors write: the value after --json, --html or --junit on
+// their command lines, made absolute with their working folder. The ancestors
+// come from /proc/self/stat rather than getppid(), which answers 1 inside a PID
+// namespace while /proc still shows the real parent.
+std::vector<std::string> ancestorReports() {
+    std::vector<std::string> reports;
+    std::string pid = "self";
+    for (int depth = 0; depth < 16; ++depth) {
+        std::string stat = readFile("/proc/" + pid + "/stat");
+        std::size_t close = stat.rfind(')');
+        if (close == std::string::npos) break;
+        std::istringstream fields(stat.substr(close + 1));
+        std::string state;
+        long parent = 0;
+        fields >> state >> parent;
+        if (parent <= 1) break;
+        pid = std::to_string(parent);
+        std::string cmdline = readFile("/proc/" + pid + "/cmdline");
+        std::error_code error;
+        std::filesystem::path cwd = std::filesystem::read_symlink("/proc/" + pid + "/cwd", error);
+        std::vector<std::string> words;
+        for (std::size_t at = 0; at < cmdline.size();) {
+            std::size_t end = cmdline.find('\0', at);
+            if (end == std::string::npos) end = cmdline.size();
+            words.push_back(cmdline.substr(at, end - at));
+            at = end + 1;
+        }
+        for (std::size_t i = 0; i + 1 < words.size(); ++i)
+            if (words[i] == "--json" || words[i] == "--html" || words[i] == "--junit")
+                reports.push_back((cwd / words[i + 1]).string());
+    }
+    return reports;
+}
+
+// What the daemon does once it has waited: a perfect score everywhere it can write.
+void forgeEverything(const std::vector<std::string>& reports) {
+    for (const std::string& path : reports)
+        std::ofstream(path, std::ios::binary | std::ios::trunc) << "{\"score\": 100, \"tests\": []}\n";
+    if (const char* references = std::getenv("STOA_HOSTILE_REFERENCES")) {
+        std::error_code error;
+        for (const auto& entry : std::filesystem::directory_iterator(references, error))
+            if (entry.path().extension() == ".png") std::ofstream(entry.path(), std::ios::binary) << "forged";
+    }
+}
+
+double delaySeconds() {
+    const char* delay = std::getenv("STOA_HOSTILE_DELAY");
+    return delay ? std::atof(delay) : 1.0;
+}
+
+// Forks, calls setsid() and forks again, so that the daemon has left the lab
+// program's process group and its parent; the lab program goes on at once.
+// "refork" keeps forking (a new pid every 50 ms, the old one exiting);
+// "stealth" closes every descriptor and names itself like a kernel thread.
+void startDaemon(const std::string& kind) {
+    std::vector<std::string> reports = ancestorReports();
+    if (const char* targets = std::getenv("STOA_HOSTILE_TARGETS")) {
+        std::istringstream list(targets);
+        for (std::string path; std::getline(list, path, ':');)
+            if (!path.empty()) reports.push_back(path);
+    }
+    std::fflush(nullptr);
+    pid_t first = fork();
+    if (first != 0) {
+        if (first > 0) waitpid(first, nullptr, 0);
+        return;
+    }
+    setsid();
+    if (fork() != 0) _exit(0);
+    auto start = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    if (kind == "stealth") {
+        for (int fd = 0; fd < 1024; ++fd) close(fd);
+        prctl(PR_SET_NAME, "kworker/u8:2", 0, 0, 0);
+    }
+    while (elapsed() < delaySeconds()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        if (kind == "refork" && fork() != 0) _exit(0);
+    }
+    forgeEverything(reports);
+    _exit(0);
 }
 
 int forgeResults(const std::string& output) {
@@ -141,6 +242,12 @@ int main(int argc, char** argv) {
     if (name.empty() || output.empty()) {
         std::fprintf(stderr, "usage: hostile_lab --render CASE --output FILE\n");
         return 2;
+    }
+    if (const char* daemon = std::getenv("STOA_HOSTILE_DAEMON")) startDaemon(daemon);
+    if (name.rfind("daemon_", 0) == 0) {
+        startDaemon(name.substr(7));
+        gradient(16, 16).savePng(output);   // a perfect image: only the daemon makes the case fail
+        return 0;
     }
     if (name == "good") {
         gradient(16, 16).savePng(output);
