@@ -1,0 +1,71 @@
+#pragma once
+// The child's side of runProcess() (ChildProcess.hpp): what it needs, prepared
+// before fork, and what it does between fork and exec. Only async-signal-safe
+// calls run after fork: the grader has other threads, one of which may hold
+// malloc's lock at that moment.
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace stoa::grader {
+
+// Everything the child needs, prepared before fork: after fork only
+// async-signal-safe calls are allowed (another thread may hold malloc's lock).
+struct ChildSetup {
+    std::vector<std::string> arguments;
+    std::vector<char*> argv;
+    std::vector<std::string> environment;
+    std::vector<char*> envp;
+    std::string workDir;
+    int unshareFlags = 0;
+    int descriptorLimit = static_cast<int>(std::min<long>(sysconf(_SC_OPEN_MAX), 1 << 16));
+    // In a new user namespace the child maps the grader's own uid and gid onto
+    // themselves (the lines for /proc/self/uid_map and gid_map, made before the
+    // fork). Unmapped, it would run as "nobody", and Mesa, unable to use the
+    // user's shader cache, would compile every shader again: 3-4x slower renders.
+    std::string uidMap = std::to_string(getuid()) + " " + std::to_string(getuid()) + " 1\n";
+    std::string gidMap = std::to_string(getgid()) + " " + std::to_string(getgid()) + " 1\n";
+    struct Limit {
+        int resource;
+        rlimit value;
+    };
+    std::vector<Limit> limits;
+
+    void addLimit(int resource, rlim_t wanted) {
+        rlimit current{};
+        if (getrlimit(resource, &current) != 0) return;
+        rlim_t soft = wanted;
+        if (current.rlim_max != RLIM_INFINITY && soft > current.rlim_max) soft = current.rlim_max;
+        limits.push_back({resource, rlimit{soft, current.rlim_max}});
+    }
+
+    // The grader's environment with `overrides` ("NAME=value") replacing or adding entries.
+    void setEnvironment(const std::vector<std::string>& overrides) {
+        auto nameOf = [](const std::string& entry) { return entry.substr(0, entry.find('=')); };
+        for (char** entry = environ; entry && *entry; ++entry) {
+            std::string text = *entry;
+            bool replaced = std::any_of(overrides.begin(), overrides.end(),
+                                        [&](const std::string& o) { return nameOf(o) == nameOf(text); });
+            if (!replaced) environment.push_back(text);
+        }
+        environment.insert(environment.end(), overrides.begin(), overrides.end());
+        for (std::string& entry : environment) envp.push_back(entry.data());
+        envp.push_back(nullptr);
+    }
+};
+
+/// The child, from fork on: its own process group, stdin from /dev/null, stdout
+/// and stderr to `outputFd`, every other descriptor close-on-exec, the
+/// namespaces of `setup.unshareFlags`, then the program. With CLONE_NEWPID it
+/// starts the namespace's process 1, which starts the program and writes its
+/// wait status and the count of processes it left to `reportFd`. A failure to
+/// start goes to `errorFd` as {step (0: chdir, 1: exec or fork), errno}.
+[[noreturn]] void runChild(const ChildSetup& setup, int outputFd, int errorFd, int reportFd);
+
+} // namespace stoa::grader
