@@ -127,6 +127,15 @@ for lab_refs in "$out"/autograder/references/*/; do
       fail "autograder/references/$lab/$case_name.png is not a public case of labs/$lab/cases.ini (hidden?)"
     fi
   done
+  # The recorded render times (the cases' timeouts) name public cases only.
+  if [ -f "$lab_refs/render-times.txt" ]; then
+    while read -r case_name _; do
+      case "$case_name" in ''|'#'*) continue ;; esac
+      if [ ! -f "$manifest" ] || ! grep -q "^\[case $case_name\]" "$manifest"; then
+        fail "autograder/references/$lab/render-times.txt names $case_name, which is not a public case of labs/$lab/cases.ini (hidden?)"
+      fi
+    done < "$lab_refs/render-times.txt"
+  fi
 done
 
 echo "== 3. configure and build from a clean folder"

@@ -128,6 +128,7 @@ GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, Reference
 
     RenderOutcome render = renderCase(job, settings);
     result.seconds = render.process.seconds;
+    result.timedOut = render.process.ending == ProcessEnding::TimedOut;
     result.programOutput = render.process.output;
     if (!render.imagePath.empty() && std::filesystem::exists(render.imagePath)) result.renderedImage = render.imagePath;
     if (guard) {

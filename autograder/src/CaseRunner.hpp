@@ -9,6 +9,7 @@
 #include "ChildProcess.hpp"
 #include "GradeResult.hpp"
 #include "ReferenceGuard.hpp"
+#include "RenderTimes.hpp"
 
 #include <stoa/image/Image.hpp>
 #include <stoa/lab/CaseManifest.hpp>
@@ -26,11 +27,13 @@ struct CaseJob {
     std::filesystem::path workDir;        // emptied and recreated; the program runs and writes there
     std::filesystem::path casesFile;      // passed as --cases when not empty: a hidden case's manifest
     bool cascade = false;                 // `program` is the lab's cascade program (Cascade.hpp)
+    CaseTimeouts timeouts;                // from the solution's render time (RenderTimes.hpp)
 };
 
 struct RunSettings {
     ProcessLimits limits = defaultLimits(60.0);
     std::string backend;                  // passed as --backend when not empty
+    bool caseTimeouts = false;            // gradeCases() applies each job's `timeouts` instead of limits' timeout
 };
 
 struct RenderOutcome {

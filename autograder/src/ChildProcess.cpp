@@ -161,14 +161,24 @@ bool drain(int fd, OutputCapture& capture) {
 } // namespace
 
 ProcessLimits defaultLimits(double timeoutSeconds) {
-    ProcessLimits limits;
+    ProcessLimits limits = withTimeout(ProcessLimits{}, timeoutSeconds);
+    limits.environment.push_back("STOA_GL_CHECKED=1");
+    if (builtWithAddressSanitizer()) limits.addressSpaceBytes = 0;
+    return limits;
+}
+
+ProcessLimits withTimeout(ProcessLimits limits, double timeoutSeconds) {
     limits.timeoutSeconds = timeoutSeconds;
     limits.cpuSeconds = timeoutSeconds * usableCores() + 5.0;
-    limits.environment.push_back("STOA_GL_CHECKED=1");
-#ifdef STOA_GRADER_ASAN
-    limits.addressSpaceBytes = 0;
-#endif
     return limits;
+}
+
+bool builtWithAddressSanitizer() {
+#ifdef STOA_GRADER_ASAN
+    return true;
+#else
+    return false;
+#endif
 }
 
 ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::filesystem::path& workDir,

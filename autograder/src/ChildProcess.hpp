@@ -45,6 +45,13 @@ struct ProcessLimits {
 /// shadow memory needs terabytes of address space; the lab programs share the build).
 ProcessLimits defaultLimits(double timeoutSeconds);
 
+/// `limits` with another timeout, and the CPU limit that goes with it as in defaultLimits().
+ProcessLimits withTimeout(ProcessLimits limits, double timeoutSeconds);
+
+/// True when this program (and so the lab programs of its build) was built with
+/// AddressSanitizer, which makes code several times slower.
+bool builtWithAddressSanitizer();
+
 enum class ProcessEnding {
     Exited,          // returned from main or called exit(); see exitCode
     Signalled,       // killed by a signal it did not handle; see signal

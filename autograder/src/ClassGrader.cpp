@@ -6,6 +6,7 @@
 #include "Grader.hpp"
 #include "JsonWriter.hpp"
 #include "LabCatalog.hpp"
+#include "RenderTimes.hpp"
 #include "Report.hpp"
 #include "ReportFile.hpp"
 #include "StrayProcesses.hpp"
@@ -333,8 +334,11 @@ StudentGrade gradeSubmission(const Submission& submission, const Framework& fram
             std::vector<std::string> argv = {framework.gradeProgram.string(),
                                              "--bin-dir", (buildDir / "bin").string(),
                                              "--json", (studentDir / "results.json").string(),
-                                             "--work-dir", (studentDir / "work").string(),
-                                             "--timeout", std::to_string(options.timeoutSeconds)};
+                                             "--work-dir", (studentDir / "work").string()};
+            if (options.timeoutSeconds > 0.0) {
+                argv.push_back("--timeout");
+                argv.push_back(std::to_string(options.timeoutSeconds));
+            }
             for (const std::string& lab : built) {
                 argv.push_back("--lab");
                 argv.push_back(lab);
@@ -344,7 +348,9 @@ StudentGrade gradeSubmission(const Submission& submission, const Framework& fram
                 argv.push_back((studentDir / "report.html").string());
             }
             ProcessLimits limits = buildLimits(65536);
-            limits.timeoutSeconds = 60.0 + options.timeoutSeconds * 4.0 * 64;
+            // Every case of every lab (and its cascade run) at its full limit, and then some.
+            double perCase = options.timeoutSeconds > 0.0 ? options.timeoutSeconds : kUnrecordedTimeoutSeconds * 4.0;
+            limits.timeoutSeconds = 60.0 + perCase * 4.0 * 64;
             ProcessOutcome grading = runProcess(argv, studentDir, limits);
             writeText(studentDir / "grade.log", grading.output);
             if (std::string note = strayNote("stoa-grade", grading); !note.empty()) grade.notes.push_back(note);

@@ -29,7 +29,7 @@ struct ClassOptions {
     std::filesystem::path outDir;
     int jobs = 1;                          // students built and graded at once
     std::vector<std::string> labs;         // --lab; empty = every lab
-    double timeoutSeconds = 60.0;          // per case, passed to stoa-grade
+    double timeoutSeconds = 0.0;           // per case, passed to stoa-grade; 0: stoa-grade's own (RenderTimes.hpp)
     std::filesystem::path frameworkBuild;  // empty = the build folder stoa-grade-class runs from
 };
 

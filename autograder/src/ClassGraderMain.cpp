@@ -31,7 +31,8 @@ options:
   --out DIR               where gradebook.csv and one folder per student go
   --jobs N                students built and graded at once (default: the number of cores)
   --lab NN_name|NN        grade only this lab (repeatable)
-  --timeout SECONDS       wall-clock limit per case (default 60)
+  --timeout SECONDS       wall-clock limit per case (default: stoa-grade's, from the
+                          solution's recorded render time of each case)
   --framework-build DIR   the framework's build folder (default: the one this program is in)
 
 output: DIR/gradebook.csv (student, points per lab, total, max, status, notes) and

@@ -39,7 +39,7 @@ struct Options {
     std::filesystem::path jsonFile;           // Gradescope results.json; empty = none
     std::filesystem::path htmlFile;           // the self-contained HTML report; empty = none
     std::filesystem::path junitFile;          // JUnit XML; empty = none
-    double timeoutSeconds = 60.0;             // per case, wall clock
+    double timeoutSeconds = 0.0;              // per case, wall clock; 0: from the render times (RenderTimes.hpp)
     int jobs = 1;                             // cases rendered at once
     std::filesystem::path workDir;            // empty = a fresh folder under the system's temp dir
     std::optional<GradeStatus> expect;        // Passed or NotAttempted: exit 1 unless every case has it

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <set>
 #include <thread>
 
 namespace stoa::grader {
@@ -36,9 +37,23 @@ std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunS
     ReferenceGuard guard(references);
     std::mutex progressMutex;
     std::size_t done = 0;
+    // A program that has timed out once hangs: its remaining cases get the short limit.
+    std::set<std::filesystem::path> hungPrograms;
     forEachInParallel(jobs.size(), parallelJobs, [&](std::size_t i) {
-        results[i] = gradeCase(jobs[i], settings, &guard);
+        RunSettings caseSettings = settings;
+        bool hung = false;
+        if (settings.caseTimeouts) {
+            std::unique_lock<std::mutex> lock(progressMutex);
+            hung = hungPrograms.count(jobs[i].program) > 0;
+            lock.unlock();
+            caseSettings.limits = withTimeout(settings.limits, hung ? jobs[i].timeouts.afterTimeout
+                                                                     : jobs[i].timeouts.first);
+        }
+        results[i] = gradeCase(jobs[i], caseSettings, &guard);
+        if (hung && results[i].timedOut)
+            results[i].reason += " (the short limit: the program timed out on an earlier case)";
         std::lock_guard<std::mutex> lock(progressMutex);
+        if (results[i].timedOut) hungPrograms.insert(jobs[i].program);
         ++done;
         if (progress) progress(i, results[i], done, jobs.size());
     });

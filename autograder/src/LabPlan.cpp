@@ -3,6 +3,7 @@
 #include <stoa/core/InputError.hpp>
 
 #include <algorithm>
+#include <map>
 
 namespace stoa::grader {
 
@@ -67,6 +68,12 @@ std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path
                               const std::filesystem::path& sourceDir, const std::filesystem::path& workDir,
                               bool cascade) {
     std::vector<CaseJob> jobs;
+    const bool sanitized = builtWithAddressSanitizer();
+    std::map<std::string, double> publicTimes =
+        readRenderTimes(renderTimesPath(referenceImagePath(sourceDir, lab.lab, "x").parent_path()));
+    std::map<std::string, double> hiddenTimes;
+    if (!lab.hiddenManifest.empty())
+        hiddenTimes = readRenderTimes(renderTimesPath(hiddenReferenceImagePath(sourceDir, lab.lab, "x").parent_path()));
     for (const CaseSpec& spec : lab.cases) {
         bool hidden = !lab.hiddenManifest.empty() && std::filesystem::path(spec.file) == lab.hiddenManifest;
         CaseJob job;
@@ -77,6 +84,9 @@ std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path
                                : referenceImagePath(sourceDir, lab.lab, spec.name);
         job.workDir = cascade ? workDir / "cascade" / lab.lab / spec.name : workDir / lab.lab / spec.name;
         job.cascade = cascade;
+        const std::map<std::string, double>& times = hidden ? hiddenTimes : publicTimes;
+        auto time = times.find(spec.name);
+        job.timeouts = caseTimeouts(time == times.end() ? 0.0 : time->second, sanitized);
         if (hidden) job.casesFile = lab.hiddenManifest;
         jobs.push_back(std::move(job));
     }
@@ -85,7 +95,10 @@ std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path
 
 RunSettings runSettings(const Options& options) {
     RunSettings settings;
-    settings.limits = defaultLimits(options.timeoutSeconds);
+    // Without --timeout, each case's limit comes from its recorded render time;
+    // the 60 s here is for what runs outside gradeCases() (references, --info).
+    settings.caseTimeouts = options.timeoutSeconds <= 0.0;
+    settings.limits = defaultLimits(settings.caseTimeouts ? 60.0 : options.timeoutSeconds);
     settings.backend = options.backend;
     return settings;
 }

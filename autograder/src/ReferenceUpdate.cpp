@@ -2,11 +2,13 @@
 
 #include "Grader.hpp"
 #include "MistakeGallery.hpp"
+#include "RenderTimes.hpp"
 
 #include <stoa/core/InputError.hpp>
 #include <stoa/image/ImageCompare.hpp>
 
 #include <cstring>
+#include <map>
 #include <mutex>
 #include <sstream>
 
@@ -131,6 +133,16 @@ int runUpdateReferences(const Options& options, const Environment& env) {
     }
     env.out << "references in " << (env.sourceDir / "autograder" / "references").string() << ": "
             << jobs.size() - failures << " of " << jobs.size() << " up to date\n";
+
+    // The render times beside the references, from which each case's timeout comes.
+    std::map<std::filesystem::path, std::map<std::string, double>> times;
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+        if (renders[i].rendered)
+            times[jobs[i].reference.parent_path()][jobs[i].spec.name] = renders[i].process.seconds;
+    for (const auto& [folder, measured] : times) {
+        std::filesystem::path file = renderTimesPath(folder);
+        if (updateRenderTimes(file, measured)) env.out << "render times: updated " << file.string() << "\n";
+    }
 
     if (!gallery.empty() || !notes.empty()) {
         std::vector<RenderOutcome> galleryRenders(renders.begin() + jobs.size(), renders.end());

@@ -20,25 +20,13 @@
 // Exit status: 0 done; 1 error; 2 bad command line; 3 not attempted (a stub is still in place).
 
 #include <stoa/lab/Lab.hpp>
+#include <stoa/lab/LabBuildInfo.hpp>
 
 #include <string>
 
 namespace stoa {
 
-/// Where a lab program's files are, baked in by stoa_add_lab() (framework/cmake/StoaLab.cmake).
-struct LabBuildInfo {
-    const char* name;          // "01_transforms"
-    const char* track;         // "labs", "solutions" or "mistake:NAME"
-    const char* labDirectory;  // labs/01_transforms (its cases.ini)
-    const char* shaderPath;    // folders separated by '|'
-};
-
 int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv);
-
-/// This program's build info. Not written by hand: the build generates one
-/// definition per lab program (framework/cmake/StoaLab.cmake), so that a lab's
-/// app sources compile once for all its programs (solution, stubs, mistakes, ...).
-LabBuildInfo labBuildInfo();
 
 enum ExitCode { kExitOk = 0, kExitError = 1, kExitUsage = 2, kExitNotAttempted = 3 };
 

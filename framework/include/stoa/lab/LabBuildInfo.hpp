@@ -1,0 +1,20 @@
+#pragma once
+// Where a lab program's files are. Not written by hand: stoa_add_lab()
+// (framework/cmake/StoaLab.cmake) generates one small source per lab program that
+// defines labBuildInfo(), so that a lab's app sources compile once for all its
+// programs (solution, stubs, mistakes, ...). This header includes nothing, so that
+// those generated sources compile in a blink.
+
+namespace stoa {
+
+struct LabBuildInfo {
+    const char* name;          // "01_transforms"
+    const char* track;         // "labs", "solutions" or "mistake:NAME"
+    const char* labDirectory;  // labs/01_transforms (its cases.ini)
+    const char* shaderPath;    // folders separated by '|'
+};
+
+/// This program's build info (the generated definition).
+LabBuildInfo labBuildInfo();
+
+} // namespace stoa
