@@ -49,6 +49,16 @@ set_property(GLOBAL PROPERTY STOA_LABS "")
 set_property(GLOBAL PROPERTY STOA_MISTAKES "")
 set_property(GLOBAL PROPERTY STOA_EQUIVALENTS "")
 
+# The files of a lab's folder in labs/ that are not student files (a header such
+# as normals.hpp) are reachable from every track's student files, wherever the
+# track is: an `#include "normals.hpp"` looks first next to the including file,
+# then here. A submission's track (<build>/track) holds only its student files,
+# so a header the student changed in their own tree is not used: the student
+# code compiles against the header the lab's app compiles against.
+function(_stoa_lab_folder_includes target lab)
+  target_include_directories(${target} PRIVATE ${STOA_LABS_DIR}/${lab})
+endfunction()
+
 # Object library with the student C++ of `lab` for one track; returns its name in `out`.
 function(_stoa_student_objects out lab track_suffix source_dir)
   get_property(cpp_files GLOBAL PROPERTY STOA_LAB_${lab}_CPP)
@@ -61,6 +71,7 @@ function(_stoa_student_objects out lab track_suffix source_dir)
       endforeach()
       add_library(${target} OBJECT ${sources})
       target_link_libraries(${target} PUBLIC stoa)
+      _stoa_lab_folder_includes(${target} ${lab})
     else()
       add_library(${target} INTERFACE)   # a lab whose student files are all GLSL
       target_link_libraries(${target} INTERFACE stoa)
@@ -71,8 +82,15 @@ endfunction()
 
 # One lab program: the lab's app objects (compiled once per lab), the student
 # objects of its track, and a generated source with its build info (labBuildInfo()
-# in stoa/lab/LabApp.hpp): name, track, lab folder and the GLSL search path.
+# in stoa/lab/LabApp.hpp): name, track, lab folder and the GLSL search path. The
+# search path ends with the folders in labs/ of the lab and the labs it uses, so
+# that a GLSL include of a non-student file there is found from any track, as
+# normals.hpp is for C++ (_stoa_lab_folder_includes); student files come first.
 function(_stoa_lab_program lab target output_dir track_name search_path objects)
+  get_property(uses GLOBAL PROPERTY STOA_LAB_${lab}_USES)
+  foreach(used IN LISTS uses lab)
+    list(APPEND search_path ${STOA_LABS_DIR}/${used})
+  endforeach()
   set(app stoa_lab_app_${lab})
   if(NOT TARGET ${app})
     get_property(app_sources GLOBAL PROPERTY STOA_LAB_${lab}_APP)
@@ -200,6 +218,7 @@ function(_stoa_variant_program lab variant_file kind folder uses)
   if(sources)
     add_library(stoa_student_${kind}_${id} OBJECT ${sources})
     target_link_libraries(stoa_student_${kind}_${id} PUBLIC stoa)
+    _stoa_lab_folder_includes(stoa_student_${kind}_${id} ${lab})
     list(APPEND objects stoa_student_${kind}_${id})
   endif()
   _stoa_lab_program(${lab} ${lab}-${kind}-${name} ${CMAKE_BINARY_DIR}/bin/${folder}/${id} ${kind}:${name}
