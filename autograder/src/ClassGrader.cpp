@@ -154,8 +154,40 @@ std::string describeCounts(const std::map<std::string, int>& counts, int total) 
     return text;
 }
 
-// Adds one failed test per lab that did not build to the student's results.json
-// (creating it when nothing was graded), so Gradescope-style consumers see why.
+// results.json's output once the "<lab>/build" tests are in: the score line
+// (stoa-grade's "score: X / Y (20 passed)", none when nothing was graded) with
+// the total of every test, so that a lab that did not compile counts with its
+// points, and one line per lab that did not compile after the rest.
+std::string outputWithBuildFailures(const std::string& output, double points, double maxPoints,
+                                    const StudentGrade& grade, const std::map<std::string, std::string>& messages) {
+    std::istringstream lines(output);
+    std::string line;
+    std::string counts;
+    std::string rest;
+    bool scoreLineSeen = false;
+    while (std::getline(lines, line)) {
+        if (!scoreLineSeen && line.rfind("score: ", 0) == 0) {
+            scoreLineSeen = true;
+            std::size_t open = line.find(" (");
+            if (open != std::string::npos && line.back() == ')') counts = line.substr(open + 2, line.size() - open - 3);
+            continue;
+        }
+        rest += line + "\n";
+    }
+    int notGraded = 0;   // a lab graded through its cascade program has its cases in the counts
+    for (const auto& entry : messages)
+        if (!grade.labs.at(entry.first).cascadeBuilt) ++notGraded;
+    if (notGraded > 0)
+        counts += (counts.empty() ? "" : ", ") + std::to_string(notGraded) +
+                  (notGraded == 1 ? " lab does not compile" : " labs do not compile");
+    std::string text = "score: " + formatPoints(points) + " / " + formatPoints(maxPoints) +
+                       (counts.empty() ? "" : " (" + counts + ")") + "\n" + rest;
+    for (const auto& entry : messages) text += "lab " + entry.first + " does not compile (see its test)\n";
+    return text;
+}
+
+} // namespace
+
 void addBuildFailures(const std::filesystem::path& resultsJson, const StudentGrade& grade,
                       const std::map<std::string, std::string>& messages) {
     JsonValue document = JsonValue::object();
@@ -182,18 +214,18 @@ void addBuildFailures(const std::filesystem::path& resultsJson, const StudentGra
         tests.push(test);
     }
     double score = 0.0;
-    for (const JsonValue& test : tests.items())
+    double maxScore = 0.0;
+    for (const JsonValue& test : tests.items()) {
         if (const JsonValue* points = test.find("score")) score += points->asNumber();
+        if (const JsonValue* max = test.find("max_score")) maxScore += max->asNumber();
+    }
     document.set("score", JsonValue::number(score));
-    if (!document.find("output")) document.set("output", JsonValue::string(""));
-    std::string output = document.find("output")->asString();
-    for (const auto& entry : messages) output += "lab " + entry.first + " does not compile (see its test)\n";
-    document.set("output", JsonValue::string(output));
+    const JsonValue* output = document.find("output");
+    document.set("output", JsonValue::string(
+        outputWithBuildFailures(output ? output->asString() : "", score, maxScore, grade, messages)));
     document.set("tests", tests);
     writeReportFile(resultsJson, document.dump() + "\n", "the results");
 }
-
-} // namespace
 
 Framework locateFramework(const std::filesystem::path& sourceDir, const std::filesystem::path& buildDir,
                           const std::vector<std::string>& requestedLabs, const std::filesystem::path& cmake) {

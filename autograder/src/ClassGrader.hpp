@@ -77,6 +77,15 @@ StudentGrade gradeSubmission(const Submission& submission, const Framework& fram
 /// (tests named "<lab>/<case>" or tagged with the lab). Throws InputError when it does not parse.
 void addResults(const std::filesystem::path& resultsJson, StudentGrade& grade);
 
+/// Adds a failed "<lab>/build" test with the compiler's message for each lab in
+/// `messages` (lab -> message) to the results.json at `resultsJson`, creating it
+/// when nothing was graded. A lab graded through its cascade program gets a test
+/// worth 0 (its cases carry its points). The document's "score" and the score line
+/// of its "output" ("score: X / Y (...)") then count every test, so the total
+/// includes the points of a lab that did not compile. `grade` names each lab's points.
+void addBuildFailures(const std::filesystem::path& resultsJson, const StudentGrade& grade,
+                      const std::map<std::string, std::string>& messages);
+
 /// The gradebook as CSV text: student, one column per lab, total, max, status, notes.
 std::string gradebookCsv(const std::vector<std::string>& labs, const std::vector<StudentGrade>& grades);
 

@@ -52,6 +52,16 @@ set_property(GLOBAL PROPERTY STOA_LABS "")
 set_property(GLOBAL PROPERTY STOA_MISTAKES "")
 set_property(GLOBAL PROPERTY STOA_EQUIVALENTS "")
 
+# The files of a lab's folder in labs/ that are not student files (a header such
+# as normals.hpp) are reachable from every track's student files, wherever the
+# track is: an `#include "normals.hpp"` looks first next to the including file,
+# then here. A submission's track (<build>/track) holds only its student files,
+# so a header the student changed in their own tree is not used: the student
+# code compiles against the header the lab's app compiles against.
+function(_stoa_lab_folder_includes target lab)
+  target_include_directories(${target} PRIVATE ${STOA_LABS_DIR}/${lab})
+endfunction()
+
 # The student C++ of `lab` for one track, one OBJECT library per file, so that a
 # variant that changes one file (a planted mistake, an equivalent) compiles that
 # file alone and links the track's objects of the others. Returns the targets in
@@ -64,9 +74,7 @@ function(_stoa_student_objects out lab track_suffix source_dir)
     if(NOT TARGET ${target})
       add_library(${target} OBJECT ${source_dir}/${file})
       target_link_libraries(${target} PUBLIC stoa)
-      # A student file may include headers from its lab folder in labs/ (the
-      # track's own folder comes first, through the source file's directory).
-      target_include_directories(${target} PRIVATE ${STOA_LABS_DIR}/${lab})
+      _stoa_lab_folder_includes(${target} ${lab})
     endif()
     list(APPEND targets ${target})
   endforeach()
@@ -81,8 +89,15 @@ endfunction()
 
 # One lab program: the lab's app objects (compiled once per lab), the student
 # objects of its track, and a generated source with its build info (labBuildInfo()
-# in stoa/lab/LabBuildInfo.hpp): name, track, lab folder and the GLSL search path.
+# in stoa/lab/LabBuildInfo.hpp): name, track, lab folder and the GLSL search path. The
+# search path ends with the folders in labs/ of the lab and the labs it uses, so
+# that a GLSL include of a non-student file there is found from any track, as
+# normals.hpp is for C++ (_stoa_lab_folder_includes); student files come first.
 function(_stoa_lab_program lab target output_dir track_name search_path objects)
+  get_property(uses GLOBAL PROPERTY STOA_LAB_${lab}_USES)
+  foreach(used IN LISTS uses lab)
+    list(APPEND search_path ${STOA_LABS_DIR}/${used})
+  endforeach()
   set(app stoa_lab_app_${lab})
   if(NOT TARGET ${app})
     get_property(app_sources GLOBAL PROPERTY STOA_LAB_${lab}_APP)
@@ -212,7 +227,7 @@ function(_stoa_variant_program lab variant_file kind folder uses)
       set(target stoa_student_${kind}_${id})
       add_library(${target} OBJECT ${overlay}/${file})
       target_link_libraries(${target} PUBLIC stoa)
-      target_include_directories(${target} PRIVATE ${STOA_SOLUTIONS_DIR}/${lab} ${STOA_LABS_DIR}/${lab})
+      _stoa_lab_folder_includes(${target} ${lab})
     else()
       _stoa_student_file_target(target ${file} "")   # variants exist where the main track is solutions/
     endif()

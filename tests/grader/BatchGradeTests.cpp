@@ -109,6 +109,51 @@ TEST_CASE("addResults sums points per lab from results.json and names what did n
     CHECK(grade.labs["02_b"].note == "not attempted");
 }
 
+TEST_CASE("addBuildFailures counts a lab that did not compile in the score and in the output's total") {
+    test::TempFolder folder("batch-build-failures");
+    std::filesystem::path file = folder.write("results.json", R"({"score": 4, "output": "score: 4 / 4 (2 passed)\n",
+        "tests": [
+        {"name": "01_a/one", "score": 2, "max_score": 2, "status": "passed", "tags": ["01_a", "passed"]},
+        {"name": "01_a/two", "score": 2, "max_score": 2, "status": "passed", "tags": ["01_a", "passed"]}]})");
+    StudentGrade grade;
+    grade.labs["01_a"].maxPoints = 4;
+    grade.labs["02_b"].maxPoints = 10;
+    addBuildFailures(file, grade, {{"02_b", "b.cpp:7:10: fatal error: b.hpp: No such file or directory"}});
+
+    JsonValue document = readJsonFile(file);
+    CHECK(document.find("score")->asNumber() == 4);
+    const std::string output = document.find("output")->asString();
+    CHECK(output.rfind("score: 4 / 14 (2 passed, 1 lab does not compile)\n", 0) == 0);
+    CHECK(output.find("4 / 4") == std::string::npos);
+    CHECK(output.find("lab 02_b does not compile (see its test)") != std::string::npos);
+    const JsonValue& build = document.find("tests")->items().back();
+    CHECK(build.find("name")->asString() == "02_b/build");
+    CHECK(build.find("max_score")->asNumber() == 10);
+    CHECK(build.find("output")->asString().find("fatal error: b.hpp") != std::string::npos);
+}
+
+TEST_CASE("addBuildFailures writes a score line when no lab compiled, and none for a lab its cascade graded") {
+    test::TempFolder folder("batch-build-failures");
+    std::filesystem::path file = folder / "results.json";   // nothing graded: no results.json yet
+    StudentGrade grade;
+    grade.labs["01_a"].maxPoints = 4;
+    grade.labs["02_b"].maxPoints = 6;
+    addBuildFailures(file, grade, {{"01_a", "error one"}, {"02_b", "error two"}});
+    JsonValue document = readJsonFile(file);
+    CHECK(document.find("score")->asNumber() == 0);
+    CHECK(document.find("output")->asString().rfind("score: 0 / 10 (2 labs do not compile)\n", 0) == 0);
+
+    // 02_b's cascade program built and was graded: its build test is worth 0 and
+    // its cases already stand in the counts.
+    std::filesystem::path graded = folder.write("graded.json", R"({"score": 6,
+        "output": "score: 6 / 6 (3 passed)\nlab 01_a: nothing attempted yet\n", "tests": [
+        {"name": "02_b/one", "score": 6, "max_score": 6, "status": "passed", "tags": ["02_b", "passed", "cascade"]}]})");
+    grade.labs["02_b"].cascadeBuilt = true;
+    addBuildFailures(graded, grade, {{"02_b", "error two"}});
+    const std::string output = readJsonFile(graded).find("output")->asString();
+    CHECK(output == "score: 6 / 6 (3 passed)\nlab 01_a: nothing attempted yet\nlab 02_b does not compile (see its test)\n");
+}
+
 TEST_CASE("gradebookCsv writes one row per student and quotes notes with commas") {
     StudentGrade alice;
     alice.student = "alice";
