@@ -114,5 +114,5 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # A test that fails gets one more run, for what a loaded 2-core machine can still
 # shake loose; a real leak or error fails both runs.
 stage "sanitizer: test" run_tests build-sanitize sanitizer -LE "docs|release" \
-      -E "hostile lab programs|writes results.json itself" --repeat until-pass:2
+      -E "hostile lab programs|hostile daemons|writes results.json itself" --repeat until-pass:2
 echo "== all tests passed"
