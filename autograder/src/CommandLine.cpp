@@ -160,7 +160,7 @@ options:
   --html FILE              also write a self-contained HTML report (images, metrics, hints) to FILE
   --junit FILE             also write JUnit XML (one testsuite per lab) to FILE
   --timeout SECONDS        wall-clock limit per case (default: 10 x the solution's recorded
-                           render time, at least 10 s; 3 x, at least 2 s, for the remaining
+                           render time, at least 15 s; 3 x, at least 2 s, for the remaining
                            cases of a program that has timed out once)
   --jobs N                 render N cases at once (default 1)
   --work-dir DIR           where rendered images and heat maps go (default: a new temp folder)

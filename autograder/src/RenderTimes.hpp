@@ -21,7 +21,7 @@
 
 namespace stoa::grader {
 
-constexpr double kTimeoutFloorSeconds = 10.0;
+constexpr double kTimeoutFloorSeconds = 15.0;
 constexpr double kTimeoutFactor = 10.0;
 constexpr double kShortTimeoutFloorSeconds = 2.0;
 constexpr double kShortTimeoutFactor = 3.0;

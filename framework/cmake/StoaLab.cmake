@@ -87,7 +87,9 @@ function(_stoa_student_file_target out file track_suffix)
   set(${out} stoa_student_${id}${track_suffix} PARENT_SCOPE)
 endfunction()
 
-# One lab program: the lab's app objects (compiled once per lab), the student
+# One lab program: the lab's app (a static library compiled once per lab, and
+# exported with the framework so that a submission build links it instead of
+# compiling it again: autograder/submission/StoaExport.cmake), the student
 # objects of its track, and a generated source with its build info (labBuildInfo()
 # in stoa/lab/LabBuildInfo.hpp): name, track, lab folder and the GLSL search path. The
 # search path ends with the folders in labs/ of the lab and the labs it uses, so
@@ -101,7 +103,7 @@ function(_stoa_lab_program lab target output_dir track_name search_path objects)
   set(app stoa_lab_app_${lab})
   if(NOT TARGET ${app})
     get_property(app_sources GLOBAL PROPERTY STOA_LAB_${lab}_APP)
-    add_library(${app} OBJECT ${app_sources})
+    add_library(${app} STATIC ${app_sources})   # holds main(), which the linker takes from it
     target_link_libraries(${app} PUBLIC stoa)
   endif()
   string(REPLACE ";" "|" search_path_joined "${search_path}")
