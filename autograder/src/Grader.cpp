@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
-#include <set>
+#include <map>
 #include <thread>
 
 namespace stoa::grader {
@@ -28,6 +28,20 @@ void forEachInParallel(std::size_t count, int jobs, const std::function<void(std
     for (std::thread& thread : threads) thread.join();
 }
 
+GradeResult notRunAfterTimeouts(const CaseJob& job, int timeoutsInARow) {
+    GradeResult result;
+    result.lab = job.lab;
+    result.caseName = job.spec.name;
+    result.cascade = job.cascade;
+    result.maxPoints = job.spec.points;
+    result.visibility = job.spec.visibility;
+    result.referenceImage = job.reference;
+    result.status = GradeStatus::Error;
+    result.reason = "not run: the program timed out on " + std::to_string(timeoutsInARow) +
+                    " cases in a row, so it hangs; fix the hang and grade again";
+    return result;
+}
+
 std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunSettings& settings, int parallelJobs,
                                     const ProgressCallback& progress) {
     std::vector<GradeResult> results(jobs.size());
@@ -37,23 +51,41 @@ std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunS
     ReferenceGuard guard(references);
     std::mutex progressMutex;
     std::size_t done = 0;
-    // A program that has timed out once hangs: its remaining cases get the short limit.
-    std::set<std::filesystem::path> hungPrograms;
+    // A program that has timed out once hangs: its remaining cases get the short
+    // limit, and once it has timed out kMaxTimeoutsInARow times in a row, the rest
+    // of its cases are not run (RenderTimes.hpp).
+    struct ProgramTimeouts {
+        int total = 0;
+        int inARow = 0;
+    };
+    std::map<std::filesystem::path, ProgramTimeouts> timeouts;
     forEachInParallel(jobs.size(), parallelJobs, [&](std::size_t i) {
         RunSettings caseSettings = settings;
-        bool hung = false;
+        ProgramTimeouts seen;
         if (settings.caseTimeouts) {
             std::unique_lock<std::mutex> lock(progressMutex);
-            hung = hungPrograms.count(jobs[i].program) > 0;
+            seen = timeouts[jobs[i].program];
             lock.unlock();
-            caseSettings.limits = withTimeout(settings.limits, hung ? jobs[i].timeouts.afterTimeout
-                                                                     : jobs[i].timeouts.first);
+            caseSettings.limits = withTimeout(settings.limits, seen.total > 0 ? jobs[i].timeouts.afterTimeout
+                                                                              : jobs[i].timeouts.first);
         }
-        results[i] = gradeCase(jobs[i], caseSettings, &guard);
-        if (hung && results[i].timedOut)
-            results[i].reason += " (the short limit: the program timed out on an earlier case)";
+        if (seen.inARow >= kMaxTimeoutsInARow) {
+            results[i] = notRunAfterTimeouts(jobs[i], seen.inARow);
+        } else {
+            results[i] = gradeCase(jobs[i], caseSettings, &guard);
+            if (seen.total > 0 && results[i].timedOut)
+                results[i].reason += " (the short limit: the program timed out on an earlier case)";
+        }
         std::lock_guard<std::mutex> lock(progressMutex);
-        if (results[i].timedOut) hungPrograms.insert(jobs[i].program);
+        if (settings.caseTimeouts && seen.inARow < kMaxTimeoutsInARow) {
+            ProgramTimeouts& program = timeouts[jobs[i].program];
+            if (results[i].timedOut) {
+                ++program.total;
+                ++program.inARow;
+            } else {
+                program.inARow = 0;
+            }
+        }
         ++done;
         if (progress) progress(i, results[i], done, jobs.size());
     });

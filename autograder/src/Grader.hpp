@@ -25,9 +25,15 @@ using ProgressCallback =
 /// Grades every job; the results come back in the order of `jobs`. The reference
 /// images are guarded (ReferenceGuard) while the lab programs run: a case after
 /// which one changed fails, and the file is restored. With several jobs at once,
-/// the blame falls on the case that finished first after the change.
+/// the blame falls on the case that finished first after the change. With
+/// `settings.caseTimeouts`, each job runs under its own `timeouts`: the short one
+/// once its program has timed out, and none at all (the case fails "not run")
+/// once its program has timed out kMaxTimeoutsInARow times in a row.
 std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunSettings& settings, int parallelJobs,
                                     const ProgressCallback& progress = {});
+
+/// The result of a case that was not run because its program hangs.
+GradeResult notRunAfterTimeouts(const CaseJob& job, int timeoutsInARow);
 
 /// "[3/12] 01_transforms/orbit_front ... passed (0.8 s)"; a `label` goes before
 /// the case: "[3/12] mistake no_half_vector: 02_shading/sun ... failed (0.6 s)".

@@ -10,7 +10,8 @@
 // A case then gets max(kTimeoutFloorSeconds, kTimeoutFactor x that time) before its
 // lab program is killed. Once a program has timed out, it has shown that it hangs,
 // and its remaining cases get max(kShortTimeoutFloorSeconds, kShortTimeoutFactor x
-// the time), so that a hanging lab costs seconds, not a minute per case. Builds with
+// the time), so that a hanging lab costs seconds, not a minute per case; after
+// kMaxTimeoutsInARow timeouts in a row, its remaining cases are not run. Builds with
 // AddressSanitizer multiply both by kSanitizerSlowdown. A case with no recorded time
 // gets kUnrecordedTimeoutSeconds. `--timeout SECONDS` replaces all of this with one
 // limit for every case. The margins are in docs/instructor-guide.md, "Timeouts".
@@ -27,6 +28,7 @@ constexpr double kShortTimeoutFloorSeconds = 2.0;
 constexpr double kShortTimeoutFactor = 3.0;
 constexpr double kUnrecordedTimeoutSeconds = 30.0;
 constexpr double kSanitizerSlowdown = 4.0;
+constexpr int kMaxTimeoutsInARow = 3;
 
 struct CaseTimeouts {
     double first = kUnrecordedTimeoutSeconds;          // the case's limit

@@ -79,10 +79,11 @@ TEST_CASE("render times: a bad line names the file and the line", "[grader][time
     }
 }
 
-TEST_CASE("a program that hangs pays its case's limit once, then the short limit", "[grader][timeouts][isolation]") {
+TEST_CASE("a program that hangs pays its case's limit once, then the short limit, then is not run",
+          "[grader][timeouts][isolation]") {
     stoa::test::TempFolder folder("hanging");
     std::vector<CaseJob> jobs;
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 5; ++i) {
         CaseJob job;
         job.lab = "99_hostile";
         job.program = STOA_HOSTILE_LAB;
@@ -99,7 +100,7 @@ TEST_CASE("a program that hangs pays its case's limit once, then the short limit
     RunSettings settings;
     settings.caseTimeouts = true;
     std::vector<GradeResult> results = gradeCases(jobs, settings, 1);
-    REQUIRE(results.size() == 3);
+    REQUIRE(results.size() == 5);
     using Catch::Matchers::Contains;
     using Catch::Matchers::Equals;
     using Catch::Matchers::StartsWith;
@@ -107,17 +108,32 @@ TEST_CASE("a program that hangs pays its case's limit once, then the short limit
     CHECK_THAT(results[1].reason, StartsWith("timed out after 0.5 s"));
     CHECK_THAT(results[1].reason, Contains("timed out on an earlier case"));
     CHECK_THAT(results[2].reason, StartsWith("timed out after 0.5 s"));
+    static_assert(kMaxTimeoutsInARow == 3, "the cases below expect three timeouts before the rest is skipped");
+    for (int i = 3; i < 5; ++i) {
+        CHECK_THAT(results[i].reason, StartsWith("not run: the program timed out on 3 cases in a row"));
+        CHECK_FALSE(results[i].timedOut);
+        CHECK(results[i].seconds == 0.0);
+        CHECK(results[i].maxPoints == 1);
+    }
     for (const GradeResult& result : results) {
-        CHECK(result.timedOut);
         CHECK(result.status == GradeStatus::Error);
         CHECK(result.points == 0);
     }
 
+    // A case that finishes in time breaks the streak: hang, hang, answer, hang, hang all run.
+    std::vector<CaseJob> mixed = {jobs[0], jobs[1], jobs[2], jobs[3], jobs[4]};
+    mixed[2].spec.name = "good";
+    for (std::size_t i = 0; i < mixed.size(); ++i) mixed[i].workDir = folder.path() / ("mixed" + std::to_string(i));
+    results = gradeCases(mixed, settings, 1);
+    CHECK_FALSE(results[2].timedOut);
+    CHECK(results[3].timedOut);
+    CHECK(results[4].timedOut);
+    CHECK_THAT(results[4].reason, Contains("the short limit"));
+
     // With --timeout (caseTimeouts off), every case gets that one limit.
     settings = RunSettings{};
     settings.limits = defaultLimits(0.5);
-    jobs.resize(2);
+    jobs.resize(4);
     results = gradeCases(jobs, settings, 1);
-    CHECK_THAT(results[0].reason, Equals("timed out after 0.5 s"));
-    CHECK_THAT(results[1].reason, Equals("timed out after 0.5 s"));
+    for (const GradeResult& result : results) CHECK_THAT(result.reason, Equals("timed out after 0.5 s"));
 }
