@@ -21,7 +21,9 @@ ms_since() { echo $(( ($(date +%s%N) - $1) / 1000000 )); }
 printf '%-20s %-26s %12s %12s\n' lab "touched file" "rebuild" "stoa-grade"
 for lab_dir in "$source"/labs/[0-9][0-9]_*/; do
   lab=$(basename "$lab_dir")
-  files=$(sed -n '/STUDENT_FILES/,/APP_SOURCES/p' "$lab_dir/CMakeLists.txt" | grep -oE '[A-Za-z0-9_/]+\.cpp' || true)
+  # The .cpp files between STUDENT_FILES and APP_SOURCES in the lab's stoa_add_lab().
+  files=$(tr '\n' ' ' < "$lab_dir/CMakeLists.txt" | sed -e 's/.*STUDENT_FILES//' -e 's/APP_SOURCES.*//' |
+          grep -oE '[A-Za-z0-9_/]+\.cpp' || true)
   largest=""
   for file in $files; do
     if [ -z "$largest" ] || [ "$(wc -c < "$lab_dir/$file")" -gt "$(wc -c < "$lab_dir/$largest")" ]; then largest=$file; fi
