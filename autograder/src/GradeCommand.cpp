@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <sstream>
 
 namespace stoa::grader {
@@ -53,21 +54,68 @@ int runGrade(const Options& options, const Environment& env) {
 
     std::filesystem::path workDir = makeWorkDir(options.workDir);
     std::vector<CaseJob> jobs;
+    std::map<std::string, std::vector<CaseJob>> cascadeJobs;
     for (const PlannedLab& lab : labs) {
         std::vector<CaseJob> labJobs = caseJobs(lab, lab.program, env.sourceDir, workDir);
         jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
-        if (lab.cascadeProgram.empty()) continue;
-        // The lab's cascade run, right after its own (Cascade.hpp).
-        labJobs = caseJobs(lab, lab.cascadeProgram, env.sourceDir, workDir, true);
-        jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
+        if (!lab.cascadeProgram.empty())
+            cascadeJobs[lab.lab] = caseJobs(lab, lab.cascadeProgram, env.sourceDir, workDir, true);
     }
 
-    HintGallery gallery = HintGallery::load(jobs);   // read before any lab program runs
-    std::vector<GradeResult> results =
-        gradeCases(jobs, runSettings(options), options.jobs,
-                   [&](std::size_t, const GradeResult& result, std::size_t done, std::size_t total) {
-                       env.err << progressLine(result, done, total) << std::endl;
-                   });
+    // Read before any lab program runs, for the cascade runs too.
+    std::vector<CaseJob> everyJob = jobs;
+    for (const auto& [lab, labJobs] : cascadeJobs) everyJob.insert(everyJob.end(), labJobs.begin(), labJobs.end());
+    HintGallery gallery = HintGallery::load(everyJob);
+
+    auto printProgress = [&](std::size_t, const GradeResult& result, std::size_t done, std::size_t total) {
+        env.err << progressLine(result, done, total) << std::endl;
+    };
+    std::vector<GradeResult> results = gradeCases(jobs, runSettings(options), options.jobs, printProgress);
+
+    // The cascade runs (Cascade.hpp), for the labs whose own run lost points: one
+    // with full marks already counts, as it would on a tie.
+    std::vector<CaseJob> cascadeRun;
+    std::vector<std::string> fullMarks;
+    for (const auto& [lab, labJobs] : cascadeJobs) {
+        double points = 0.0, maxPoints = 0.0;
+        for (const GradeResult& result : results)
+            if (result.lab == lab) {
+                points += result.points;
+                maxPoints += result.maxPoints;
+            }
+        if (points >= maxPoints)
+            fullMarks.push_back(lab);
+        else
+            cascadeRun.insert(cascadeRun.end(), labJobs.begin(), labJobs.end());
+    }
+    if (!fullMarks.empty()) {
+        env.err << "cascade runs not needed (full marks on their own):";
+        for (const std::string& lab : fullMarks) env.err << " " << lab;
+        env.err << std::endl;
+    }
+    if (!cascadeRun.empty()) {
+        env.err << "cascade runs (the lab with the earlier labs' solutions):" << std::endl;
+        std::vector<GradeResult> cascadeResults =
+            gradeCases(cascadeRun, runSettings(options), options.jobs, printProgress);
+        jobs.insert(jobs.end(), cascadeRun.begin(), cascadeRun.end());
+        results.insert(results.end(), cascadeResults.begin(), cascadeResults.end());
+        // Each lab's cascade run right after its own, as the reports list them.
+        std::vector<std::size_t> order(jobs.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::map<std::string, std::size_t> labOrder;
+        for (const PlannedLab& lab : labs) labOrder.emplace(lab.lab, labOrder.size());
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            return labOrder[jobs[a].lab] < labOrder[jobs[b].lab];
+        });
+        std::vector<CaseJob> orderedJobs;
+        std::vector<GradeResult> orderedResults;
+        for (std::size_t i : order) {
+            orderedJobs.push_back(jobs[i]);
+            orderedResults.push_back(results[i]);
+        }
+        jobs = std::move(orderedJobs);
+        results = std::move(orderedResults);
+    }
     addHints(results, jobs, gallery, options.jobs);
     applyCascadePolicy(results);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
