@@ -117,7 +117,7 @@ RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings) {
     return outcome;
 }
 
-GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, ReferenceGuard* guard) {
+GradeResult ungradedResult(const CaseJob& job) {
     GradeResult result;
     result.lab = job.lab;
     result.caseName = job.spec.name;
@@ -125,6 +125,11 @@ GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, Reference
     result.maxPoints = job.spec.points;
     result.visibility = job.spec.visibility;
     result.referenceImage = job.reference;
+    return result;
+}
+
+GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, ReferenceGuard* guard) {
+    GradeResult result = ungradedResult(job);
 
     RenderOutcome render = renderCase(job, settings);
     result.seconds = render.process.seconds;

@@ -48,6 +48,9 @@ struct RenderOutcome {
 /// Runs the program for one case. Never throws: every failure is an outcome.
 RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings);
 
+/// The result of `job` before it is graded: its names, points and reference, no status yet.
+GradeResult ungradedResult(const CaseJob& job);
+
 /// renderCase(), then the comparison with the reference; for a failed case the
 /// heat map is written to <workDir>/heatmap.png. Never throws. With a `guard`, the
 /// reference comes from the guard's copy, and a case after which a guarded file

@@ -29,13 +29,7 @@ void forEachInParallel(std::size_t count, int jobs, const std::function<void(std
 }
 
 GradeResult notRunAfterTimeouts(const CaseJob& job, int timeoutsInARow) {
-    GradeResult result;
-    result.lab = job.lab;
-    result.caseName = job.spec.name;
-    result.cascade = job.cascade;
-    result.maxPoints = job.spec.points;
-    result.visibility = job.spec.visibility;
-    result.referenceImage = job.reference;
+    GradeResult result = ungradedResult(job);
     result.status = GradeStatus::Error;
     result.reason = "not run: the program timed out on " + std::to_string(timeoutsInARow) +
                     " cases in a row, so it hangs; fix the hang and grade again";

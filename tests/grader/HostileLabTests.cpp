@@ -41,6 +41,22 @@ Image gradient(int width, int height) {
     return image;
 }
 
+// One 16x16 case of the hostile lab program, with a gradient as its reference.
+CaseJob hostileJob(const std::string& name, const std::filesystem::path& references,
+                   const std::filesystem::path& work) {
+    CaseJob job;
+    job.lab = "99_hostile";
+    job.program = kHostileLab;
+    job.spec.name = name;
+    job.spec.width = 16;
+    job.spec.height = 16;
+    job.spec.points = 1;
+    job.reference = references / (name + ".png");
+    job.workDir = work / name;
+    gradient(16, 16).savePng(job.reference);
+    return job;
+}
+
 std::string readAll(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
@@ -123,17 +139,7 @@ TEST_CASE("hostile lab programs: each misdeed fails its case with a clear reason
     std::filesystem::create_directories(references);
     std::vector<CaseJob> jobs;
     for (const char* name : kCases) {
-        CaseJob job;
-        job.lab = "99_hostile";
-        job.program = kHostileLab;
-        job.spec.name = name;
-        job.spec.width = 16;
-        job.spec.height = 16;
-        job.spec.points = 1;
-        job.reference = references / (std::string(name) + ".png");
-        job.workDir = folder.path() / "work" / name;
-        gradient(16, 16).savePng(job.reference);
-        jobs.push_back(job);
+        jobs.push_back(hostileJob(name, references, folder.path() / "work"));
     }
     std::map<std::string, std::string> before;
     for (const auto& entry : std::filesystem::directory_iterator(references))
@@ -253,17 +259,7 @@ TEST_CASE("hostile daemons: a double-forked setsid() daemon is killed and fails 
     }
     std::vector<CaseJob> jobs;
     for (const char* name : {"good", "daemon_rewrite", "daemon_refork", "daemon_stealth"}) {
-        CaseJob job;
-        job.lab = "99_hostile";
-        job.program = kHostileLab;
-        job.spec.name = name;
-        job.spec.width = 16;
-        job.spec.height = 16;
-        job.spec.points = 1;
-        job.reference = references / (std::string(name) + ".png");
-        job.workDir = folder.path() / "work" / name;
-        gradient(16, 16).savePng(job.reference);
-        jobs.push_back(job);
+        jobs.push_back(hostileJob(name, references, folder.path() / "work"));
     }
     std::map<std::string, std::string> referencesBefore = contentsOf(references);
     std::map<std::string, std::string> reportsBefore = contentsOf(reports);
