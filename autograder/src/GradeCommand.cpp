@@ -97,22 +97,16 @@ int runGrade(const Options& options, const Environment& env) {
         env.err << "cascade runs (the lab with the earlier labs' solutions):" << std::endl;
         std::vector<GradeResult> cascadeResults =
             gradeCases(cascadeRun, runSettings(options), options.jobs, printProgress);
-        jobs.insert(jobs.end(), cascadeRun.begin(), cascadeRun.end());
-        results.insert(results.end(), cascadeResults.begin(), cascadeResults.end());
         // Each lab's cascade run right after its own, as the reports list them.
-        std::vector<std::size_t> order(jobs.size());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-        std::map<std::string, std::size_t> labOrder;
-        for (const PlannedLab& lab : labs) labOrder.emplace(lab.lab, labOrder.size());
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            return labOrder[jobs[a].lab] < labOrder[jobs[b].lab];
-        });
         std::vector<CaseJob> orderedJobs;
         std::vector<GradeResult> orderedResults;
-        for (std::size_t i : order) {
-            orderedJobs.push_back(jobs[i]);
-            orderedResults.push_back(results[i]);
-        }
+        for (const PlannedLab& lab : labs)
+            for (const auto* run : {&jobs, &cascadeRun})
+                for (std::size_t i = 0; i < run->size(); ++i)
+                    if ((*run)[i].lab == lab.lab) {
+                        orderedJobs.push_back((*run)[i]);
+                        orderedResults.push_back(run == &jobs ? results[i] : cascadeResults[i]);
+                    }
         jobs = std::move(orderedJobs);
         results = std::move(orderedResults);
     }

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <mutex>
 #include <map>
+#include <mutex>
 #include <thread>
 
 namespace stoa::grader {
@@ -49,7 +49,7 @@ std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunS
     // limit, and once it has timed out kMaxTimeoutsInARow times in a row, the rest
     // of its cases are not run (RenderTimes.hpp).
     struct ProgramTimeouts {
-        int total = 0;
+        bool any = false;   // it has timed out at least once
         int inARow = 0;
     };
     std::map<std::filesystem::path, ProgramTimeouts> timeouts;
@@ -60,21 +60,21 @@ std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunS
             std::unique_lock<std::mutex> lock(progressMutex);
             seen = timeouts[jobs[i].program];
             lock.unlock();
-            caseSettings.limits = withTimeout(settings.limits, seen.total > 0 ? jobs[i].timeouts.afterTimeout
+            caseSettings.limits = withTimeout(settings.limits, seen.any ? jobs[i].timeouts.afterTimeout
                                                                               : jobs[i].timeouts.first);
         }
         if (seen.inARow >= kMaxTimeoutsInARow) {
             results[i] = notRunAfterTimeouts(jobs[i], seen.inARow);
         } else {
             results[i] = gradeCase(jobs[i], caseSettings, &guard);
-            if (seen.total > 0 && results[i].timedOut)
+            if (seen.any && results[i].timedOut)
                 results[i].reason += " (the short limit: the program timed out on an earlier case)";
         }
         std::lock_guard<std::mutex> lock(progressMutex);
         if (settings.caseTimeouts && seen.inARow < kMaxTimeoutsInARow) {
             ProgramTimeouts& program = timeouts[jobs[i].program];
             if (results[i].timedOut) {
-                ++program.total;
+                program.any = true;
                 ++program.inARow;
             } else {
                 program.inARow = 0;

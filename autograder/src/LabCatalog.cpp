@@ -77,9 +77,17 @@ std::filesystem::path mistakeProgram(const std::filesystem::path& binDir, const 
     return binDir / "mistakes" / (lab + "." + mistake) / programName(lab);
 }
 
+std::filesystem::path referenceFolder(const std::filesystem::path& sourceDir, const std::string& lab) {
+    return sourceDir / "autograder" / "references" / lab;
+}
+
+std::filesystem::path hiddenReferenceFolder(const std::filesystem::path& sourceDir, const std::string& lab) {
+    return sourceDir / "solutions" / lab / "references";
+}
+
 std::filesystem::path referenceImagePath(const std::filesystem::path& sourceDir, const std::string& lab,
                                          const std::string& caseName) {
-    return sourceDir / "autograder" / "references" / lab / (caseName + ".png");
+    return referenceFolder(sourceDir, lab) / (caseName + ".png");
 }
 
 std::filesystem::path hiddenManifestPath(const std::filesystem::path& sourceDir, const std::string& lab) {
@@ -88,7 +96,7 @@ std::filesystem::path hiddenManifestPath(const std::filesystem::path& sourceDir,
 
 std::filesystem::path hiddenReferenceImagePath(const std::filesystem::path& sourceDir, const std::string& lab,
                                                const std::string& caseName) {
-    return sourceDir / "solutions" / lab / "references" / (caseName + ".png");
+    return hiddenReferenceFolder(sourceDir, lab) / (caseName + ".png");
 }
 
 std::filesystem::path cascadeProgram(const std::filesystem::path& binDir, const std::string& lab) {

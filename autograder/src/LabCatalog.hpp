@@ -39,6 +39,12 @@ std::filesystem::path labProgram(const std::filesystem::path& binDir, const std:
 std::filesystem::path mistakeProgram(const std::filesystem::path& binDir, const std::string& lab,
                                      const std::string& mistake);
 
+/// <sourceDir>/autograder/references/<lab>: the public cases' references (and their render times).
+std::filesystem::path referenceFolder(const std::filesystem::path& sourceDir, const std::string& lab);
+
+/// <sourceDir>/solutions/<lab>/references: the hidden cases' references.
+std::filesystem::path hiddenReferenceFolder(const std::filesystem::path& sourceDir, const std::string& lab);
+
 /// <sourceDir>/autograder/references/<lab>/<caseName>.png
 std::filesystem::path referenceImagePath(const std::filesystem::path& sourceDir, const std::string& lab,
                                          const std::string& caseName);

@@ -69,11 +69,10 @@ std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path
                               bool cascade) {
     std::vector<CaseJob> jobs;
     const bool sanitized = builtWithAddressSanitizer();
-    std::map<std::string, double> publicTimes =
-        readRenderTimes(renderTimesPath(referenceImagePath(sourceDir, lab.lab, "x").parent_path()));
+    std::map<std::string, double> publicTimes = readRenderTimes(renderTimesPath(referenceFolder(sourceDir, lab.lab)));
     std::map<std::string, double> hiddenTimes;
     if (!lab.hiddenManifest.empty())
-        hiddenTimes = readRenderTimes(renderTimesPath(hiddenReferenceImagePath(sourceDir, lab.lab, "x").parent_path()));
+        hiddenTimes = readRenderTimes(renderTimesPath(hiddenReferenceFolder(sourceDir, lab.lab)));
     for (const CaseSpec& spec : lab.cases) {
         bool hidden = !lab.hiddenManifest.empty() && std::filesystem::path(spec.file) == lab.hiddenManifest;
         CaseJob job;

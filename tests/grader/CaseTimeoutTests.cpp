@@ -5,6 +5,7 @@
 #include "catch.hpp"
 
 #include "Grader.hpp"
+#include "HostileJob.hpp"
 #include "RenderTimes.hpp"
 #include "TempFolder.hpp"
 
@@ -84,15 +85,8 @@ TEST_CASE("a program that hangs pays its case's limit once, then the short limit
     stoa::test::TempFolder folder("hanging");
     std::vector<CaseJob> jobs;
     for (int i = 0; i < 5; ++i) {
-        CaseJob job;
-        job.lab = "99_hostile";
-        job.program = STOA_HOSTILE_LAB;
-        job.spec.name = "infinite_loop";
-        job.spec.width = 16;
-        job.spec.height = 16;
-        job.spec.points = 1;
-        job.reference = folder.path() / "references" / "none.png";
-        job.workDir = folder.path() / ("work" + std::to_string(i));
+        CaseJob job = stoa::test::hostileJob("infinite_loop", folder.path() / "references",
+                                             folder.path() / ("work" + std::to_string(i)));
         job.timeouts.first = 1.5;
         job.timeouts.afterTimeout = 0.5;
         jobs.push_back(job);
@@ -121,7 +115,7 @@ TEST_CASE("a program that hangs pays its case's limit once, then the short limit
     }
 
     // A case that finishes in time breaks the streak: hang, hang, answer, hang, hang all run.
-    std::vector<CaseJob> mixed = {jobs[0], jobs[1], jobs[2], jobs[3], jobs[4]};
+    std::vector<CaseJob> mixed = jobs;
     mixed[2].spec.name = "good";
     for (std::size_t i = 0; i < mixed.size(); ++i) mixed[i].workDir = folder.path() / ("mixed" + std::to_string(i));
     results = gradeCases(mixed, settings, 1);

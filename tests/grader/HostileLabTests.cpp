@@ -7,6 +7,7 @@
 
 #include "GradeCommand.hpp"
 #include "Grader.hpp"
+#include "HostileJob.hpp"
 #include "LabPlan.hpp"
 #include "ProcessContainment.hpp"
 #include "TempFolder.hpp"
@@ -28,34 +29,11 @@
 
 using namespace stoa::grader;
 using stoa::Image;
+using stoa::test::gradient;
+using stoa::test::hostileJob;
+using stoa::test::kHostileLab;
 
 namespace {
-
-const char* const kHostileLab = STOA_HOSTILE_LAB;
-
-Image gradient(int width, int height) {
-    Image image(width, height, 4);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            image.setPixel(x, y, {static_cast<std::uint8_t>(x * 16), static_cast<std::uint8_t>(y * 16), 128, 255});
-    return image;
-}
-
-// One 16x16 case of the hostile lab program, with a gradient as its reference.
-CaseJob hostileJob(const std::string& name, const std::filesystem::path& references,
-                   const std::filesystem::path& work) {
-    CaseJob job;
-    job.lab = "99_hostile";
-    job.program = kHostileLab;
-    job.spec.name = name;
-    job.spec.width = 16;
-    job.spec.height = 16;
-    job.spec.points = 1;
-    job.reference = references / (name + ".png");
-    job.workDir = work / name;
-    gradient(16, 16).savePng(job.reference);
-    return job;
-}
 
 std::string readAll(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary);
