@@ -8,7 +8,7 @@ packages=(
   build-essential cmake pkg-config git ninja-build ccache
   freeglut3-dev libglew-dev libglm-dev libstb-dev libtinyobjloader-dev
   libosmesa6-dev libegl-dev libgl1-mesa-dri
-  catch2 xvfb xauth mkdocs
+  catch2 xvfb xauth xdotool mkdocs
   zip unzip python3
 )
 

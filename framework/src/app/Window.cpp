@@ -8,6 +8,8 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <exception>
+#include <utility>
 #include <stdexcept>
 
 namespace stoa {
@@ -23,8 +25,23 @@ struct WindowState {
     bool haveMouse = false;
     FixedStepClock clock;
     std::chrono::steady_clock::time_point lastFrame;
+    std::exception_ptr escaped;   // an exception a handler let out, rethrown by run()
 };
 WindowState* g_state = nullptr;
+
+// An exception must not unwind through freeglut's C frames. Each callback runs
+// its handler here: an exception that escapes the handler ends the event loop,
+// and Window::run() rethrows it to the program's own error handling.
+template <typename Function>
+void guarded(Function&& function) {
+    if (g_state->escaped) return;
+    try {
+        function();
+    } catch (...) {
+        g_state->escaped = std::current_exception();
+        glutLeaveMainLoop();
+    }
+}
 
 unsigned char normalizeKey(unsigned char key) {
     // With Ctrl held GLUT reports control codes (Ctrl+A = 1); map letters back.
@@ -45,9 +62,11 @@ void onDisplay() {
     const double elapsed = std::chrono::duration<double>(now - g_state->lastFrame).count();
     g_state->lastFrame = now;
     const int steps = g_state->clock.advance(elapsed);
-    for (int i = 0; i < steps; ++i)
-        g_state->handler->update(static_cast<float>(g_state->clock.step()), g_state->input);
-    g_state->handler->display(g_state->size);
+    guarded([&] {
+        for (int i = 0; i < steps; ++i)
+            g_state->handler->update(static_cast<float>(g_state->clock.step()), g_state->input);
+        g_state->handler->display(g_state->size);
+    });
     glutSwapBuffers();
 }
 
@@ -57,7 +76,7 @@ void onKeyDown(unsigned char key, int, int) {
     readModifiers();
     const unsigned char normalized = normalizeKey(key);
     g_state->input.keys[normalized] = true;
-    g_state->handler->keyPressed(normalized, g_state->input);
+    guarded([&] { g_state->handler->keyPressed(normalized, g_state->input); });
 }
 
 void onKeyUp(unsigned char key, int, int) {
@@ -85,7 +104,7 @@ void onMouse(int button, int buttonState, int x, int y) {
     readModifiers();
     const bool down = buttonState == GLUT_DOWN;
     if ((button == 3 || button == 4) && down) {   // wheel
-        g_state->handler->mouseWheel(button == 3 ? 1 : -1);
+        guarded([&] { g_state->handler->mouseWheel(button == 3 ? 1 : -1); });
         return;
     }
     if (button == GLUT_LEFT_BUTTON) g_state->input.buttons[0] = down;
@@ -97,7 +116,8 @@ void onMouse(int button, int buttonState, int x, int y) {
 
 void onMotion(int x, int y) {
     const glm::vec2 position(x, y);
-    if (g_state->haveMouse) g_state->handler->mouseDragged(position - g_state->input.mouse, g_state->input);
+    if (g_state->haveMouse)
+        guarded([&] { g_state->handler->mouseDragged(position - g_state->input.mouse, g_state->input); });
     g_state->input.mouse = position;
     g_state->haveMouse = true;
 }
@@ -151,6 +171,7 @@ void Window::run(WindowHandler& handler) {
     glutIdleFunc(onIdle);
     glutMainLoop();
     g_state->handler = nullptr;
+    if (g_state->escaped) std::rethrow_exception(std::exchange(g_state->escaped, nullptr));
 }
 
 void Window::requestClose() { glutLeaveMainLoop(); }

@@ -20,6 +20,7 @@
 #include <cstring>
 #include <iostream>
 #include <optional>
+#include <set>
 #include <sstream>
 
 namespace stoa {
@@ -182,7 +183,13 @@ public:
         }
     }
 
-    void update(float seconds, const InputState& input) override { m_lab.activeCamera().update(input, seconds); }
+    // Every callback below runs student code (the cameras' move(), look(),
+    // tumble() ... are lab 01's exercises) through runStudentCode(), as
+    // renderLive() does, so that a stub shows "not implemented: ..." and the
+    // window keeps running.
+    void update(float seconds, const InputState& input) override {
+        runStudentCode([&] { m_lab.activeCamera().update(input, seconds); });
+    }
 
     void mouseDragged(glm::vec2 delta, const InputState& input) override {
         runStudentCode([&] { m_lab.activeCamera().mouseDragged(input, delta); });
@@ -325,13 +332,20 @@ private:
         m_overlay->draw(*m_imageProgram, {(size.x - shown.x) / 2, (size.y - shown.y) / 2, shown.x, shown.y});
     }
 
+    // Runs student code from an input callback. A stub's problem goes to the
+    // terminal and the title bar (after the frame's own problem, if it has one);
+    // the window goes on with the next event.
     template <typename Function>
     void runStudentCode(Function&& function) {
         try {
             function();
+            return;
         } catch (const NotImplemented& stub) {
-            showProblem("not implemented: " + stub.function());
+            m_inputProblem = "not implemented: " + stub.function();
+        } catch (const ShaderNotImplemented& stub) {
+            m_inputProblem = std::string("not implemented: ") + stub.what();
         }
+        setStatus(m_frameProblem);
     }
 
     void showProblem(const std::string& problem) {
@@ -341,11 +355,24 @@ private:
         if (!m_screenshot.empty()) m_exitCode = kExitNotAttempted;
     }
 
-    void setStatus(const std::string& status) {
+    // The title bar shows the frame's problem and the last one an input callback
+    // met (a stub met there stays on show: C++ code does not change while the
+    // program runs); the terminal gets each problem once.
+    void setStatus(const std::string& frameProblem) {
+        m_frameProblem = frameProblem;
+        std::string status = frameProblem;
+        if (!m_inputProblem.empty() && m_inputProblem != frameProblem)
+            status += (status.empty() ? "" : "; ") + m_inputProblem;
+        reportOnce(frameProblem);
+        reportOnce(m_inputProblem);
         if (status == m_status) return;
         m_status = status;
         m_window.setTitle(std::string("Stoa lab ") + m_info.name + (status.empty() ? "" : " -- " + status));
-        if (!status.empty()) std::fprintf(stderr, "stoa: %s\n", status.c_str());
+    }
+
+    void reportOnce(const std::string& problem) {
+        if (problem.empty() || !m_reported.insert(problem).second) return;
+        std::fprintf(stderr, "stoa: %s\n", problem.c_str());
     }
 
     void reloadChangedShaders() {
@@ -379,6 +406,9 @@ private:
     LabResources& m_resources;
     std::string m_screenshot;
     std::string m_status = "-";
+    std::string m_inputProblem;       // the last stub an input callback met ("" when none)
+    std::string m_frameProblem;       // the stub the last frame met ("" when none)
+    std::set<std::string> m_reported;   // problems already printed to the terminal
     std::string m_lastShaderError;
     std::chrono::steady_clock::time_point m_lastReloadCheck = std::chrono::steady_clock::now();
     int m_framesDrawn = 0;

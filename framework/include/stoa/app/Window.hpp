@@ -43,6 +43,8 @@ public:
     Window& operator=(const Window&) = delete;
 
     /// Runs the event loop until the window closes or requestClose() is called.
+    /// An exception that escapes a handler's callback ends the loop and is
+    /// rethrown here (it never unwinds through GLUT).
     void run(WindowHandler& handler);
     void requestClose();
     void setTitle(const std::string& title);
