@@ -16,7 +16,7 @@ mat3 tangentFrame(mat4 model, mat3 normalMatrix, vec3 normalObject, vec4 tangent
     return STOA_NOT_IMPLEMENTED(mat3(1.0));
 }
 
-// Equation (1) of seed 002: a world-space vector expressed in the tangent frame
+// Equation (1) of Velázquez-Armendáriz and Millán (2006): a world-space vector expressed in the tangent frame
 // (its components along T, B and N). tangentToWorld comes from tangentFrame().
 vec3 toTangentSpace(mat3 tangentToWorld, vec3 vectorWorld) {
     // TODO(lab04): the inverse of tangentToWorld. Its columns are orthonormal.

@@ -26,7 +26,7 @@ float shadowTap(sampler2D shadowMap, vec2 uv, float depth, float bias) {
 }
 
 // s in [0, 1]: 0 in full shadow, 1 fully lit. pcfMode 0: one tap; 1: the four
-// texels around the point (seed 002's 2x2); 2: the 3x3 texels centred on it.
+// texels around the point (the 2x2 of Velázquez-Armendáriz and Millán 2006); 2: the 3x3 texels centred on it.
 // Points outside the map (beyond its sides or its far plane) count as lit.
 float shadowFactor(sampler2D shadowMap, vec3 coordinates, float bias, int pcfMode) {
     // TODO(lab05): outside the map -> 1.0; then average shadowTap() over 1, 2x2 or 3x3 texels
@@ -34,7 +34,7 @@ float shadowFactor(sampler2D shadowMap, vec3 coordinates, float bias, int pcfMod
     return STOA_NOT_IMPLEMENTED(1.0);
 }
 
-// Seed 002, eq. 4: I_frag = I_amb + 1/2 (1 + s) I_out.
+// Velázquez-Armendáriz and Millán (2006), eq. 4: I_frag = I_amb + 1/2 (1 + s) I_out.
 vec3 umbraShade(vec3 ambient, vec3 lightOut, float s) {
     // TODO(lab05): eq. 4 (docs: "The umbra formula").
     return STOA_NOT_IMPLEMENTED(ambient + lightOut);

@@ -17,7 +17,7 @@ mat3 tangentFrame(mat4 model, mat3 normalMatrix, vec3 normalObject, vec4 tangent
     return mat3(T, B, N);
 }
 
-// Equation (1) of seed 002: a world-space vector expressed in the tangent frame
+// Equation (1) of Velázquez-Armendáriz and Millán (2006): a world-space vector expressed in the tangent frame
 // (its components along T, B and N). tangentToWorld comes from tangentFrame().
 vec3 toTangentSpace(mat3 tangentToWorld, vec3 vectorWorld) {
     return transpose(tangentToWorld) * vectorWorld;

@@ -29,7 +29,7 @@ float shadowTap(sampler2D shadowMap, vec2 uv, float depth, float bias) {
 }
 
 // s in [0, 1]: 0 in full shadow, 1 fully lit. pcfMode 0: one tap; 1: the four
-// texels around the point (seed 002's 2x2); 2: the 3x3 texels centred on it.
+// texels around the point (the 2x2 of Velázquez-Armendáriz and Millán 2006); 2: the 3x3 texels centred on it.
 // Points outside the map (beyond its sides or its far plane) count as lit.
 float shadowFactor(sampler2D shadowMap, vec3 coordinates, float bias, int pcfMode) {
     if (coordinates.z > 1.0 || any(lessThan(coordinates.xy, vec2(0.0))) || any(greaterThan(coordinates.xy, vec2(1.0))))
@@ -54,7 +54,7 @@ float shadowFactor(sampler2D shadowMap, vec3 coordinates, float bias, int pcfMod
     return sum / 9.0;
 }
 
-// Seed 002, eq. 4: I_frag = I_amb + 1/2 (1 + s) I_out. Full shadow keeps half of
+// Velázquez-Armendáriz and Millán (2006), eq. 4: I_frag = I_amb + 1/2 (1 + s) I_out. Full shadow keeps half of
 // the light (an umbra, not black); s = 1 gives the unshadowed colour.
 vec3 umbraShade(vec3 ambient, vec3 lightOut, float s) {
     return ambient + 0.5 * (1.0 + s) * lightOut;

@@ -156,7 +156,7 @@ TEST_CASE("slopeScaledBias grows with tan(theta) between its minimum and maximum
     CHECK(evaluate("slopeScaledBias(0.0, " + biasText + "), 0.0, 0.0, 0.0").x == Approx(bias.z).margin(1e-7));
 }
 
-TEST_CASE("umbraShade is eq. 4 of seed 002") {
+TEST_CASE("umbraShade is eq. 4 of Velazquez-Armendariz and Millan (2006)") {
     stoa::HeadlessContext context;
     for (const float s : {0.0f, 0.5f, 1.0f}) {
         const glm::vec4 got = evaluate("umbraShade(vec3(0.1, 0.05, 0.0), vec3(0.6, 0.4, 0.2), " + glsl(s) + "), 0.0");

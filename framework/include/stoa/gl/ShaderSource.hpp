@@ -6,7 +6,7 @@
 // The driver's messages still point at the right place: ShaderSource knows
 // which file and line every line of the expanded text came from, and
 // translateLog() turns the driver's "0:57(5): error: ..." back into
-// "shaders/common/lighting.glsl:12: error: ...".
+// "shaders/common/lights.glsl:12: error: ...".
 //
 // Why no `#line N K` directives: Mesa (22.3, llvmpipe) honours the line
 // number of `#line` (the next line is N) but reports source string 0 for
