@@ -12,8 +12,10 @@
 #      the solution has (a line of 40 characters or more) occurs anywhere in the release,
 #      but for generic lines an instructor has listed in autograder/release-allowed-lines.txt;
 #   2. every reference image belongs to a public case of its lab's cases.ini;
-#   3. the release configures and builds from a clean folder, as a student's would;
-#   4. its stoa-grade reports every case "not attempted" (--expect not-attempted).
+#   3. no page or comment a student reads points at a file the release leaves out
+#      (autograder/check-release-paths.py);
+#   4. the release configures and builds from a clean folder, as a student's would;
+#   5. its stoa-grade reports every case "not attempted" (--expect not-attempted).
 # Exit status 0 when the release is made and verified, 1 otherwise, 2 on bad usage.
 set -euo pipefail
 
@@ -138,13 +140,25 @@ for lab_refs in "$out"/autograder/references/*/; do
   fi
 done
 
-echo "== 3. configure and build from a clean folder"
+echo "== 3. the docs and comments point only at files the release has"
+if command -v python3 >/dev/null 2>&1; then
+  if ! python3 "$source/autograder/check-release-paths.py" "$out" > "$out.paths.txt"; then
+    while IFS= read -r line; do fail "$line"; done < "$out.paths.txt"
+  else
+    echo "   $(cat "$out.paths.txt")"
+  fi
+  rm -f "$out.paths.txt"
+else
+  echo "   (python3 not found: skipped)"
+fi
+
+echo "== 4. configure and build from a clean folder"
 build=$(mktemp -d "${TMPDIR:-/tmp}/stoa-release-build.XXXXXX")
 start=$(date +%s)
 if cmake -S "$out" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo > "$build.configure.log" 2>&1 &&
    cmake --build "$build" -j"$jobs" > "$build.build.log" 2>&1; then
   echo "   built in $(( $(date +%s) - start )) s"
-  echo "== 4. every case not attempted"
+  echo "== 5. every case not attempted"
   if ! "$build/bin/stoa-grade" --expect not-attempted --jobs "$jobs" --work-dir "$build/grade"; then
     fail "the release's stoa-grade does not report every case 'not attempted'"
   fi
