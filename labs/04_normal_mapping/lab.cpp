@@ -14,6 +14,8 @@
 //   view = shaded | normals              normals: the bumped world normal as a colour
 //   normal_mapping = on | off            off: light with the mesh's own normals
 
+#include "checks.hpp"
+
 #include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/core/Paths.hpp>
@@ -122,6 +124,11 @@ public:
             return true;
         }
         return false;
+    }
+
+    stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
+        if (spec.check == "normal_map_wraps") return lab04::checkNormalMapWraps();
+        return Lab::runCheck(spec);
     }
 
     std::vector<std::string> keyHelp() const override {

@@ -81,8 +81,8 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
 }
 
 // The keys of a case that the parser reads itself; any other key is a scene parameter.
-const char* const kTypedCaseKeys[] = {"description", "resolution", "points",
-                                      "visibility",  "tolerance",  "max_bad_fraction"};
+const char* const kTypedCaseKeys[] = {"description", "resolution",       "points",        "visibility",
+                                      "tolerance",   "max_bad_fraction", "max_flip_mean", "check"};
 
 bool isTypedCaseKey(const std::string& key) {
     return std::find(std::begin(kTypedCaseKeys), std::end(kTypedCaseKeys), key) != std::end(kTypedCaseKeys);
@@ -202,6 +202,12 @@ private:
             if (!parseNumber(value, fraction) || fraction < 0.0 || fraction > 1.0)
                 fail("expected a max_bad_fraction from 0 to 1, got '" + value + "'");
             spec.compare.maxBadFraction = fraction;
+        } else if (key == "check") {
+            const bool identifier = !value.empty() && std::all_of(value.begin(), value.end(), [](char c) {
+                return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+            });
+            if (!identifier) fail("expected 'check = NAME' with letters, digits and '_', got '" + value + "'");
+            spec.check = value;
         } else if (key == "max_flip_mean") {
             double mean = 0.0;
             if (!parseNumber(value, mean) || mean < 0.0 || mean > 1.0)
@@ -393,6 +399,13 @@ std::string LabManifest::caseNames() const {
         names += spec.name;
     }
     return names;
+}
+
+std::vector<const CaseSpec*> LabManifest::pictureCases() const {
+    std::vector<const CaseSpec*> pictures;
+    for (const CaseSpec& spec : cases)
+        if (spec.check.empty()) pictures.push_back(&spec);
+    return pictures;
 }
 
 LabManifest parseManifest(const std::string& text, const std::string& file) {

@@ -15,6 +15,7 @@
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -29,6 +30,8 @@ namespace {
 
 struct Options {
     bool list = false;
+    bool listChecks = false;
+    std::string check;           // --check NAME or all: run property checks headless
     bool info = false;
     bool help = false;
     std::string renderCase;      // headless
@@ -49,12 +52,14 @@ void printUsage(const LabBuildInfo& info, std::FILE* to) {
     std::fprintf(to,
                  "usage: lab%s [--case NAME] [--view live|yours|reference|difference] [--screenshot FILE]\n"
                  "       lab%s --render NAME --output FILE.png [--backend osmesa|egl]\n"
-                 "       lab%s --list | --info | --help\n"
+                 "       lab%s --check NAME|all [--backend osmesa|egl]\n"
+                 "       lab%s --list | --list-checks | --info | --help\n"
                  "Any of them takes --cases FILE.ini: the cases from that manifest instead of the lab's\n"
                  "cases.ini (the grader's hidden cases).\n\n"
-                 "Without --render the lab opens a window; see docs/labs/%s.md.\n"
-                 "Exit status: 0 done, 1 error, 2 bad command line, 3 not attempted (a stub is in place).\n",
-                 info.name, info.name, info.name, info.name);
+                 "Without --render or --check the lab opens a window; see docs/labs/%s.md.\n"
+                 "Exit status: 0 done, 1 error, 2 bad command line, 3 not attempted (a stub is in place),\n"
+                 "4 a property check does not hold.\n",
+                 info.name, info.name, info.name, info.name, info.name);
 }
 
 Options parseOptions(int argc, char** argv) {
@@ -66,6 +71,8 @@ Options parseOptions(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--list") options.list = true;
+        else if (arg == "--list-checks") options.listChecks = true;
+        else if (arg == "--check") options.check = value(i);
         else if (arg == "--info") options.info = true;
         else if (arg == "--help" || arg == "-h") options.help = true;
         else if (arg == "--render") options.renderCase = value(i);
@@ -85,13 +92,19 @@ Options parseOptions(int argc, char** argv) {
         else if (arg == "--cases") options.casesFile = value(i);
         else
             throw InputError("", 0, "unknown argument '" + arg +
-                                        "' (valid: --case, --view, --screenshot, --render, --output, --backend, --cases, "
-                                        "--list, --info, --help)");
+                                        "' (valid: --case, --view, --screenshot, --render, --output, --backend, --check, "
+                                        "--cases, --list, --list-checks, --info, --help)");
     }
     if (!options.renderCase.empty() && options.output.empty())
         throw InputError("", 0, "--render needs --output FILE.png");
-    if (options.renderCase.empty() && (!options.output.empty() || options.backend))
-        throw InputError("", 0, "--output and --backend go with --render");
+    if (!options.check.empty() && (!options.renderCase.empty() || !options.output.empty()))
+        throw InputError("", 0, "--check runs property checks; it takes no --render or --output");
+    if (!options.check.empty() && (!options.windowCase.empty() || !options.screenshot.empty() || options.view))
+        throw InputError("", 0, "--case, --view and --screenshot are for the window; --check runs headless");
+    if (options.renderCase.empty() && !options.output.empty())
+        throw InputError("", 0, "--output goes with --render");
+    if (options.renderCase.empty() && options.check.empty() && options.backend)
+        throw InputError("", 0, "--backend goes with --render or --check");
     if (!options.renderCase.empty() && (!options.windowCase.empty() || !options.screenshot.empty() || options.view))
         throw InputError("", 0, "--case, --view and --screenshot are for the window; --render renders headless");
     return options;
@@ -132,12 +145,58 @@ Image renderCaseImage(Lab& lab, const LabResources& resources, const CaseSpec& s
     return image;
 }
 
+// Runs one property check and prints its verdict as one line (the grader shows
+// the last line of output as the case's reason). 0 when it holds, else kExitCheckFailed.
+// (A check runs C++ only: the GLSL stubs of the lab's programs do not stop it.)
+int runOneCheck(Lab& lab, const CaseSpec& spec) {
+    spec.requireAllKeysUsed();
+    const CheckResult result = lab.runCheck(spec);
+    std::printf("check %s: %s: %s\n", spec.name.c_str(), result.holds ? "holds" : "does not hold",
+                result.message.c_str());
+    std::fflush(stdout);
+    return result.holds ? kExitOk : kExitCheckFailed;
+}
+
+// --check NAME|all: the lab's property checks, headless, each with its verdict.
+int runChecks(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, const Options& options) {
+    std::vector<const CaseSpec*> selected;
+    for (const CaseSpec& spec : manifest.cases)
+        if (!spec.check.empty() && (options.check == "all" || spec.name == options.check)) selected.push_back(&spec);
+    if (selected.empty()) {
+        std::string checks;
+        for (const CaseSpec& spec : manifest.cases)
+            if (!spec.check.empty()) checks += (checks.empty() ? "" : ", ") + spec.name;
+        throw InputError(manifest.file, 0,
+                         "no property check '" + options.check + "' (checks: " + (checks.empty() ? "none" : checks) +
+                             "; 'all' runs every one)");
+    }
+    HeadlessContext context(options.backend);
+    enableDebugOutput();
+    LabResources resources(splitSearchPath(info.shaderPath));
+    lab.initialize(resources);
+    int failed = 0, notAttempted = 0;
+    for (const CaseSpec* spec : selected) {
+        try {
+            if (runOneCheck(lab, *spec) != kExitOk) ++failed;
+        } catch (const NotImplemented& stub) {
+            std::printf("check %s: not attempted: not implemented: %s\n", spec->name.c_str(), stub.function().c_str());
+            ++notAttempted;
+        }
+    }
+    if (selected.size() > 1)
+        std::printf("%zu of %zu checks hold\n", selected.size() - static_cast<std::size_t>(failed + notAttempted),
+                    selected.size());
+    return failed > 0 ? kExitCheckFailed : notAttempted > 0 ? kExitNotAttempted : kExitOk;
+}
+
 int renderHeadless(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, const Options& options) {
     const CaseSpec& spec = findCase(manifest, options.renderCase);
     HeadlessContext context(options.backend);
     enableDebugOutput();
     LabResources resources(splitSearchPath(info.shaderPath));
     lab.initialize(resources);
+    // A property check renders no picture: the exit status is the verdict.
+    if (!spec.check.empty()) return runOneCheck(lab, spec);
     lab.loadCase(spec);
     spec.requireAllKeysUsed();
 
@@ -204,12 +263,12 @@ public:
             m_window.requestClose();
         } else if (key >= '1' && key <= '9') {
             const std::size_t index = static_cast<std::size_t>(key - '1');
-            if (index < m_manifest.cases.size()) {
+            if (index < m_pictures.size()) {
                 m_caseIndex = index;
                 m_view = View::Live;
-                runStudentCode([&] { m_lab.loadCase(m_manifest.cases[index]); });
-                std::printf("case %zu: %s -- %s\n", index + 1, m_manifest.cases[index].name.c_str(),
-                            m_manifest.cases[index].description.c_str());
+                runStudentCode([&] { m_lab.loadCase(*m_pictures[index]); });
+                std::printf("case %zu: %s -- %s\n", index + 1, m_pictures[index]->name.c_str(),
+                            m_pictures[index]->description.c_str());
             }
         } else if (key == '\t') {
             runStudentCode([&] { m_lab.toggleCamera(); });
@@ -237,8 +296,10 @@ public:
                     "  Shaders reload by themselves when you save them.\n",
                     m_info.name, m_info.track);
         for (const std::string& line : m_lab.keyHelp()) std::printf("  %s\n", line.c_str());
-        for (std::size_t i = 0; i < m_manifest.cases.size() && i < 9; ++i)
-            std::printf("  case %zu: %s\n", i + 1, m_manifest.cases[i].name.c_str());
+        for (std::size_t i = 0; i < m_pictures.size() && i < 9; ++i)
+            std::printf("  case %zu: %s\n", i + 1, m_pictures[i]->name.c_str());
+        if (m_pictures.size() < m_manifest.cases.size())
+            std::printf("  property checks (no picture): lab%s --check all\n", m_info.name);
     }
 
     int exitCode() const { return m_exitCode; }
@@ -267,14 +328,14 @@ private:
         static const char* const names[] = {"live", "yours", "reference", "difference"};
         std::printf("view: %s\n", names[static_cast<int>(m_view)]);
         m_window.setTitle(std::string("Stoa lab ") + m_info.name + " -- " + names[static_cast<int>(m_view)] +
-                          (m_view == View::Live ? "" : " -- case " + m_manifest.cases[m_caseIndex].name));
+                          (m_view == View::Live ? "" : " -- case " + m_pictures[m_caseIndex]->name));
     }
 
     // Renders the current case at its size from its own camera (what
     // `--render` writes), compares it with its reference as stoa-grade does, and
     // keeps the three pictures as textures. False when the case cannot render.
     bool gradeCurrentCase() {
-        const CaseSpec& spec = m_manifest.cases[m_caseIndex];
+        const CaseSpec& spec = *m_pictures[m_caseIndex];
         Image yours;
         try {
             m_lab.loadCase(spec);
@@ -403,6 +464,7 @@ private:
     Window& m_window;
     const LabBuildInfo& m_info;
     const LabManifest& m_manifest;
+    const std::vector<const CaseSpec*> m_pictures = m_manifest.pictureCases();   // keys 1..9 jump to these
     LabResources& m_resources;
     std::string m_screenshot;
     std::string m_status = "-";
@@ -422,7 +484,13 @@ private:
 
 int runWindow(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, const Options& options, int argc,
               char** argv) {
-    const CaseSpec& first = options.windowCase.empty() ? manifest.cases.front() : findCase(manifest, options.windowCase);
+    const std::vector<const CaseSpec*> pictures = manifest.pictureCases();
+    if (pictures.empty()) throw InputError(manifest.file, 0, "no case with a picture to show in the window");
+    const CaseSpec& first = options.windowCase.empty() ? *pictures.front() : findCase(manifest, options.windowCase);
+    if (!first.check.empty())
+        throw InputError(manifest.file, first.line,
+                         "case '" + first.name + "' is a property check, with no picture: run it with --check " +
+                             first.name);
     WindowOptions windowOptions;
     windowOptions.title = std::string("Stoa lab ") + info.name;
     if (!options.screenshot.empty()) {
@@ -434,7 +502,7 @@ int runWindow(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, c
     LabResources resources(splitSearchPath(info.shaderPath));
     lab.initialize(resources);
     LabWindow handler(lab, window, info, manifest, resources, options.screenshot);
-    handler.setCase(static_cast<std::size_t>(&first - manifest.cases.data()));
+    handler.setCase(static_cast<std::size_t>(std::find(pictures.begin(), pictures.end(), &first) - pictures.begin()));
     try {
         lab.loadCase(first);
         first.requireAllKeysUsed();
@@ -449,6 +517,10 @@ int runWindow(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, c
 }
 
 } // namespace
+
+CheckResult Lab::runCheck(const CaseSpec& spec) {
+    spec.reject("check", "this lab has no property check '" + spec.check + "'");
+}
 
 LabResources::LabResources(std::vector<std::filesystem::path> shaderSearchPath)
     : m_searchPath(std::move(shaderSearchPath)) {}
@@ -485,10 +557,12 @@ int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv) {
                                                       : std::filesystem::path(options.casesFile));
         if (!manifest.lab.empty() && manifest.lab != info.name)
             throw InputError(manifest.file, 0, "these are the cases of lab " + manifest.lab + ", not of lab " + info.name);
-        if (options.list) {
-            for (const CaseSpec& spec : manifest.cases) std::printf("%s\n", spec.name.c_str());
+        if (options.list || options.listChecks) {
+            for (const CaseSpec& spec : manifest.cases)
+                if (spec.check.empty() == options.list) std::printf("%s\n", spec.name.c_str());
             return kExitOk;
         }
+        if (!options.check.empty()) return runChecks(lab, info, manifest, options);
         if (!options.renderCase.empty() && !manifest.find(options.renderCase)) {
             std::fprintf(stderr, "lab%s: no case '%s' (cases: %s)\n", info.name, options.renderCase.c_str(),
                          manifest.caseNames().c_str());

@@ -45,6 +45,7 @@ public:
     double points = 1.0;
     Visibility visibility = Visibility::Visible;
     CompareOptions compare;          // defaults unless the case sets tolerance / max_bad_fraction / max_flip_mean
+    std::string check;               // `check = NAME`: a property check (PropertyCheck.hpp), no picture; "" otherwise
     std::string file;                // the manifest it came from
     int line = 0;                    // the line of its [case ...] header
 
@@ -102,6 +103,8 @@ struct LabManifest {
     const CaseSpec* find(const std::string& name) const;
     /// "orbit_front, orbit_side, ..." for error messages.
     std::string caseNames() const;
+    /// The cases that render a picture, in file order (not the property checks).
+    std::vector<const CaseSpec*> pictureCases() const;
 };
 
 /// Parses a manifest. Throws InputError with file and line on a syntax error, an

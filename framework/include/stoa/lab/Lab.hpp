@@ -4,6 +4,7 @@
 // shader reload, stub detection) is runLab()'s (LabApp.hpp), the same for every lab.
 
 #include <stoa/app/Input.hpp>
+#include <stoa/lab/PropertyCheck.hpp>
 
 #include <glm/vec2.hpp>
 
@@ -57,6 +58,10 @@ public:
     virtual bool keyPressed(unsigned char key) { (void)key; return false; }
     /// Lines added to the window's key help, e.g. "f  toggle facet normals".
     virtual std::vector<std::string> keyHelp() const { return {}; }
+    /// Runs the property check `spec.check` (a case with a `check` key, PropertyCheck.hpp),
+    /// after initialize(), with a GL context current. A stub it calls throws
+    /// NotImplemented as in render(). The default knows no check: InputError.
+    virtual CheckResult runCheck(const CaseSpec& spec);
 };
 
 } // namespace stoa

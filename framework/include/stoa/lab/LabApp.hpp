@@ -10,14 +10,18 @@
 //   (no arguments)             open the window at the first case's view
 //   --case NAME                open the window at that case
 //   --screenshot FILE          with the window: draw the case, save the frame as PNG, quit
-//   --list                     print the case names
+//   --list                     print the names of the cases that render a picture
+//   --list-checks              print the names of the property checks (PropertyCheck.hpp)
+//   --check NAME|all [--backend osmesa|egl]
+//                              run a property check (or all), headless, and print the verdicts
 //   --info                     print the lab and the track it was built from
 //   --render NAME --output FILE [--backend osmesa|egl]
 //                              render a case headless into a PNG
 //   --cases FILE.ini           with any of the above: the cases come from FILE.ini
 //                              instead of the lab's cases.ini (the grader passes a
 //                              lab's hidden_cases.ini this way)
-// Exit status: 0 done; 1 error; 2 bad command line; 3 not attempted (a stub is still in place).
+// Exit status: 0 done; 1 error; 2 bad command line; 3 not attempted (a stub is still in place);
+// 4 a property check does not hold.
 
 #include <stoa/lab/Lab.hpp>
 #include <stoa/lab/LabBuildInfo.hpp>
@@ -28,7 +32,7 @@ namespace stoa {
 
 int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv);
 
-enum ExitCode { kExitOk = 0, kExitError = 1, kExitUsage = 2, kExitNotAttempted = 3 };
+enum ExitCode { kExitOk = 0, kExitError = 1, kExitUsage = 2, kExitNotAttempted = 3, kExitCheckFailed = 4 };
 
 } // namespace stoa
 

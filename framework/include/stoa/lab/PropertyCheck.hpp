@@ -1,0 +1,33 @@
+#pragma once
+// A property check: a graded case that tests what a picture cannot show (the
+// shadow map moving by whole texels as the camera moves, a normal map that
+// wraps at its borders). A check calls the student's functions on inputs of its
+// own and tests a property the docs state (for example: shifting the height map
+// by k texels shifts its normal map by k texels); it holds no answer to copy.
+//
+// In a lab's cases.ini a check is a case with a `check` key and no picture:
+//
+//   [case texel_snapping]
+//   description = The cascade's box moves by whole texels when the camera moves by less
+//   check = texel_snapping
+//   points = 1
+//
+// `labNN --check NAME` (or `--check all`) runs it and prints the verdict; the
+// grader runs it as `--render NAME` and reads the exit status: 0 it holds,
+// kExitCheckFailed (4) it does not, 3 a stub is still in place.
+
+#include <string>
+
+namespace stoa {
+
+/// What a check found: whether the property holds, and one line that says what
+/// was measured (and, when it fails, what the docs require instead).
+struct CheckResult {
+    bool holds = false;
+    std::string message;
+
+    static CheckResult pass(std::string message) { return {true, std::move(message)}; }
+    static CheckResult fail(std::string message) { return {false, std::move(message)}; }
+};
+
+} // namespace stoa
