@@ -11,6 +11,7 @@ namespace {
 
 constexpr int kExitNotAttempted = 3;
 constexpr int kExitBadUsage = 2;
+constexpr int kExitCheckFailed = 4;   // a property check that does not hold (PropertyCheck.hpp)
 
 const char* const kNoReference = "no reference image: run stoa-grade --update-references from a solutions build";
 
@@ -89,6 +90,20 @@ RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings) {
             outcome.reason = notAttemptedReason(outcome.process);
             return outcome;
         }
+        if (!job.spec.check.empty()) {
+            // A property check draws no picture: its exit status is the verdict and
+            // its last line says what it measured.
+            if (outcome.process.exitedWith(0) || outcome.process.exitedWith(kExitCheckFailed)) {
+                outcome.status = outcome.process.exitedWith(0) ? GradeStatus::Passed : GradeStatus::Failed;
+                outcome.reason = outcome.process.lastOutputLine();
+                const std::string prefix = "check " + job.spec.name + ": ";
+                if (outcome.reason.rfind(prefix, 0) == 0) outcome.reason = outcome.reason.substr(prefix.size());
+                if (outcome.reason.empty()) outcome.reason = outcome.process.exitedWith(0) ? "holds" : "does not hold";
+            } else {
+                outcome.reason = errorReason(outcome.process);
+            }
+            return outcome;
+        }
         if (!outcome.process.exitedWith(0)) {
             outcome.reason = errorReason(outcome.process);
             return outcome;
@@ -124,7 +139,8 @@ GradeResult ungradedResult(const CaseJob& job) {
     result.cascade = job.cascade;
     result.maxPoints = job.spec.points;
     result.visibility = job.spec.visibility;
-    result.referenceImage = job.reference;
+    result.propertyCheck = !job.spec.check.empty();
+    if (!result.propertyCheck) result.referenceImage = job.reference;
     return result;
 }
 
@@ -148,6 +164,7 @@ GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, Reference
     if (!render.rendered) {
         result.status = render.status;
         result.reason = render.reason;
+        if (result.status == GradeStatus::Passed) result.points = job.spec.points;   // a property check that holds
         return result;
     }
 

@@ -38,7 +38,8 @@ struct RunSettings {
 
 struct RenderOutcome {
     bool rendered = false;                // an image of the case's size was written and read back
-    GradeStatus status = GradeStatus::Error;   // NotAttempted or Error when not rendered
+    GradeStatus status = GradeStatus::Error;   // NotAttempted or Error when not rendered; for a
+                                               // property check (no picture) Passed or Failed
     std::string reason;                   // why not rendered, in one line
     Image image;
     std::filesystem::path imagePath;      // <workDir>/rendered.png

@@ -49,6 +49,7 @@ struct GradeResult {
     std::filesystem::path heatMapImage;    // written for failed cases of the right size
     std::filesystem::path referenceImage;
     std::optional<CompareMetrics> metrics; // set when the image was compared with the reference
+    bool propertyCheck = false;            // a property check (cases.ini `check`): no picture, `reason` says why
 
     // A failed case whose image is closer to a known mistake's (the lab's
     // mistake gallery) than to the reference carries that mistake's hint.

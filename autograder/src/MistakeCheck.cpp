@@ -54,7 +54,8 @@ MistakeVerdict judgeMistake(const MistakeFile& mistake, const std::vector<GradeR
         auto result = std::find_if(results.begin(), results.end(),
                                    [&](const GradeResult& entry) { return entry.caseName == name; });
         if (result == results.end() || result->status != GradeStatus::Failed) continue;
-        if (result->hintMistake == mistake.name) hintNamesIt = true;
+        // A failed property check has no picture to match; its own message says what does not hold.
+        if (result->hintMistake == mistake.name || result->propertyCheck) hintNamesIt = true;
         else hintNotes.push_back(name + ": " + (result->hasHint() ? "hint names " + result->hintMistake : "no hint"));
     }
     if (problems.empty() && !hintNamesIt) {

@@ -88,7 +88,9 @@ std::vector<GalleryJob> galleryJobs(const std::vector<PlannedLab>& labs, const E
             }
             std::filesystem::path folder = workDir / "mistakes" / (lab.lab + "." + mistake.name);
             for (const CaseJob& job : caseJobs(lab, program, env.sourceDir, folder))
-                if (contains(mistake.fails, job.spec.name)) jobs.push_back(GalleryJob{mistake, job});
+                // Property checks draw no picture: the gallery has images of picture cases only.
+                if (contains(mistake.fails, job.spec.name) && job.spec.check.empty())
+                    jobs.push_back(GalleryJob{mistake, job});
         }
     }
     return jobs;

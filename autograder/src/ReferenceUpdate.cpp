@@ -127,7 +127,15 @@ int runUpdateReferences(const Options& options, const Environment& env) {
     int failures = 0;
     for (std::size_t i = 0; i < jobs.size(); ++i) {
         bool ok = false;
-        std::string line = writeOrKeepImage(jobs[i].reference, jobs[i].spec.compare, renders[i], ok);
+        std::string line;
+        if (!jobs[i].spec.check.empty()) {
+            // A property check has no reference image: the solution's must hold.
+            ok = renders[i].status == GradeStatus::Passed;
+            line = ok ? "property check holds (no reference image)"
+                      : std::string(statusName(renders[i].status)) + ": " + renders[i].reason;
+        } else {
+            line = writeOrKeepImage(jobs[i].reference, jobs[i].spec.compare, renders[i], ok);
+        }
         if (!ok) ++failures;
         env.out << jobs[i].lab << "/" << jobs[i].spec.name << ": " << line << "\n";
     }

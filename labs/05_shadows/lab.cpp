@@ -31,6 +31,7 @@
 // Cascades use their own bias, a few texels of each map (shadow_renderer.cpp); `bias` is
 // for the single map.
 
+#include "checks.hpp"
 #include "shadow_renderer.hpp"
 
 #include <stoa/camera/CameraRig.hpp>
@@ -111,6 +112,7 @@ public:
         const stoa::Program& shadowed = resources.loadProgram("shadows/shadowed.vert", "shadows/shadowed.frag");
         const stoa::Program& mapView = resources.loadProgram("shadows/depth_view.vert", "shadows/depth_view.frag");
         m_renderer = std::make_unique<stoa::ShadowRenderer>(depth, shadowed, mapView);
+        m_depthProgram = &depth;
         m_resources = &resources;
     }
 
@@ -219,6 +221,14 @@ public:
         return true;
     }
 
+    stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
+        if (spec.check == "depth_pass_both_faces") return lab05::checkDepthPassBothFaces(*m_depthProgram);
+        if (spec.check == "slice_corners") return lab05::checkSliceCorners();
+        if (spec.check == "cascade_depth_reaches_occluders") return lab05::checkCascadeDepthReachesOccluders();
+        if (spec.check == "texel_snapping") return lab05::checkTexelSnapping();
+        return Lab::runCheck(spec);
+    }
+
     std::vector<std::string> keyHelp() const override {
         return {"o            shadows on / off", "p            PCF: single tap, 2x2, 3x3",
                 "m            show the shadow map (the cascades' maps) in a corner",
@@ -243,6 +253,7 @@ private:
     int m_cascadeCountOn = 4;   // what key n turns on
     std::unique_ptr<stoa::ShadowRenderer> m_renderer;
     stoa::LabResources* m_resources = nullptr;
+    const stoa::Program* m_depthProgram = nullptr;
     const stoa::Program* m_cascadeProgram = nullptr;
 };
 

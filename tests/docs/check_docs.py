@@ -12,7 +12,9 @@ Checks that the docs hold together with the code and the grader's galleries:
    first case the gallery says M fails; and every picture has the size of its case (cases.ini).
 4. Each "Common mistakes" section's "Fails:" line lists exactly the cases the gallery says that
    mistake fails (autograder/references/NN/mistakes/M/mistake.txt, written by
-   `stoa-grade --update-references` from the measured runs), or says "every case" when it fails all.
+   `stoa-grade --update-references` from the measured runs; for a mistake that fails property
+   checks only, its .mistake file), or says "every case" when it fails every picture case; and
+   every planted mistake has its section.
 
 Prints every problem with its file and line; exits 1 when there is any.
 """
@@ -85,24 +87,38 @@ def png_size(path):
 
 
 def case_sizes(manifest):
-    sizes, current = {}, None
+    """The picture cases' sizes, and the names of the property checks (cases with `check =`)."""
+    sizes, checks, current = {}, set(), None
     for line in manifest.read_text(encoding="utf-8").splitlines():
         section = re.match(r"\[case (\S+)\]", line.strip())
         if section:
             current = section.group(1)
-            sizes[current] = None
+            sizes[current] = (512, 512)
         elif current and re.match(r"resolution\s*=", line.strip()):
             width, height = line.split("=", 1)[1].split()
             sizes[current] = (int(width), int(height))
-    return sizes
+        elif current and re.match(r"check\s*=", line.strip()):
+            checks.add(current)
+    for name in checks:
+        del sizes[name]
+    return sizes, checks
 
 
 def gallery(lab):
+    """Each mistake's failed cases: from the gallery (autograder/references, in the release),
+    and where the gallery has no entry (a mistake that fails property checks only, which have no
+    picture) from its .mistake file in solutions/ when the tree has it."""
     mistakes = {}
     for info in sorted((root / "autograder" / "references" / lab / "mistakes").glob("*/mistake.txt")):
         for line in info.read_text(encoding="utf-8").splitlines():
             if line.startswith("fails:"):
                 mistakes[info.parent.name] = line.split(":", 1)[1].split()
+    for planted in sorted((root / "solutions" / lab / "mistakes").glob("*.mistake")):
+        if planted.stem in mistakes:
+            continue
+        for line in planted.read_text(encoding="utf-8").splitlines():
+            if line.startswith("fails:"):
+                mistakes[planted.stem] = line.split(":", 1)[1].split()
     return mistakes
 
 
@@ -112,7 +128,7 @@ for page in sorted((root / "docs" / "labs").glob("[0-9][0-9]_*.md")):
     manifest = root / "labs" / lab / "cases.ini"
     if not manifest.exists():
         continue
-    sizes = case_sizes(manifest)
+    sizes, checks = case_sizes(manifest)
     mistakes = gallery(lab)
     lines = page.read_text(encoding="utf-8").splitlines()
     for number, line in enumerate(lines, 1):
@@ -125,7 +141,8 @@ for page in sorted((root / "docs" / "labs").glob("[0-9][0-9]_*.md")):
                 continue
             case_name = named.group(1)
             if case_name not in sizes:
-                problem(page, number, f"the caption names case {case_name}, which labs/{lab}/cases.ini does not have")
+                problem(page, number, f"the caption names case {case_name}, which labs/{lab}/cases.ini does not have"
+                                      + (" as a picture case (it is a property check)" if case_name in checks else ""))
                 continue
             if is_mistake:
                 fails = mistakes.get(stem)

@@ -1,0 +1,196 @@
+// Lab 05's property checks; see checks.hpp. The slices here are shapes of the
+// checks' own (eight points), not computed frusta: only the function under test
+// is yours in each check.
+
+#include "checks.hpp"
+
+#include <stoa/geometry/Shapes.hpp>
+#include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/GpuMesh.hpp>
+#include <stoa/gl/Program.hpp>
+#include <stoa/render/ShadowMapping.hpp>
+#include <stoa/scene/MeshObject.hpp>
+#include <stoa/scene/Scene.hpp>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+namespace lab05 {
+
+namespace {
+
+std::string number(double value, int decimals = 2) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+// A slice-like shape: a small quad near the camera at the origin, a large one
+// further along -Z, the order of frustumSliceCorners() (x right when k & 1, y up
+// when k & 2, far when k & 4).
+std::array<glm::vec3, 8> sliceShape() {
+    std::array<glm::vec3, 8> corners;
+    for (int k = 0; k < 8; ++k) {
+        const bool far = (k & 4) != 0;
+        const float halfWidth = far ? 9.0f : 2.5f, halfHeight = far ? 5.5f : 1.5f, depth = far ? 16.0f : 4.0f;
+        corners[static_cast<std::size_t>(k)] =
+            glm::vec3((k & 1) ? halfWidth : -halfWidth, (k & 2) ? halfHeight : -halfHeight, -depth);
+    }
+    return corners;
+}
+
+std::array<glm::vec3, 8> transformed(const std::array<glm::vec3, 8>& corners, const glm::mat4& matrix) {
+    std::array<glm::vec3, 8> result;
+    for (std::size_t k = 0; k < 8; ++k) result[k] = glm::vec3(matrix * glm::vec4(corners[k], 1.0f));
+    return result;
+}
+
+// Whether the depth map holds something nearer than the far plane at its centre.
+bool depthWritten(const stoa::Framebuffer& map) {
+    const std::vector<float> depth = map.readDepth();
+    const int center = (map.height() / 2) * map.width() + map.width() / 2;
+    return depth[static_cast<std::size_t>(center)] < 0.999f;
+}
+
+} // namespace
+
+stoa::CheckResult checkDepthPassBothFaces(const stoa::Program& depthProgram) {
+    stoa::FramebufferOptions options;
+    options.color = false;
+    options.depthTexture = true;
+    const stoa::Framebuffer map(64, 64, options);
+    // A light below the square, looking up at it: the square's front face (+Y) looks away from it.
+    const glm::mat4 fromBelow = glm::ortho(-2.0f, 2.0f, -2.0f, 2.0f, 0.1f, 10.0f) *
+                                glm::lookAt(glm::vec3(0.0f, -5.0f, 0.0f), glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f));
+    const glm::mat4 fromAbove = glm::ortho(-2.0f, 2.0f, -2.0f, 2.0f, 0.1f, 10.0f) *
+                                glm::lookAt(glm::vec3(0.0f, 5.0f, 0.0f), glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f));
+    stoa::Scene scene;
+    scene.add(std::make_unique<stoa::MeshObject>(std::make_shared<const stoa::GpuMesh>(stoa::shapes::plane(2.0f, 1))));
+
+    stoa::renderShadowPass(scene, map, depthProgram, fromAbove);
+    const bool front = depthWritten(map);
+    stoa::renderShadowPass(scene, map, depthProgram, fromBelow);
+    const bool back = depthWritten(map);
+    stoa::Framebuffer::bindDefault();
+    if (front && back) return stoa::CheckResult::pass("a square leaves its depth in the map with either face towards the light");
+    if (front)
+        return stoa::CheckResult::fail("a square whose back faces the light left no depth in the map, with its front "
+                                       "towards the light it did: the depth pass culls faces, but single-sided "
+                                       "surfaces cast shadows from both sides (docs: The two passes)");
+    if (back)
+        return stoa::CheckResult::fail("a square whose front faces the light left no depth in the map, with its back "
+                                       "towards the light it did: the depth pass culls the faces that face the light "
+                                       "(docs: The two passes)");
+    return stoa::CheckResult::fail("a square in the middle of the light's view left no depth in the map with either "
+                                   "face towards the light: clear the map, enable the depth test and draw every "
+                                   "object with the depth program (docs: The two passes)");
+}
+
+stoa::CheckResult checkSliceCorners() {
+    const float fov = 50.0f, aspect = 1.6f, sliceNear = 2.0f, sliceFar = 11.0f;
+    const glm::mat4 view = glm::lookAt(glm::vec3(3.0f, 2.0f, 6.0f), glm::vec3(-1.0f, 0.5f, -2.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    const std::array<glm::vec3, 8> corners = stoa::frustumSliceCorners(view, fov, aspect, sliceNear, sliceFar);
+    const float tangent = std::tan(glm::radians(fov) * 0.5f);
+    for (int k = 0; k < 8; ++k) {
+        const glm::vec3 inView = glm::vec3(view * glm::vec4(corners[static_cast<std::size_t>(k)], 1.0f));
+        const bool far = (k & 4) != 0;
+        const float distance = far ? sliceFar : sliceNear;
+        const std::string which = std::string("corner ") + std::to_string(k) + " (" + (far ? "far" : "near") + ", " +
+                                  ((k & 1) ? "right" : "left") + ", " + ((k & 2) ? "top" : "bottom") + ")";
+        if (std::abs(-inView.z - distance) > 1e-3f * distance) {
+            std::string message = which + " lies " + number(-inView.z) + " m in front of the camera; the slice's " +
+                                  (far ? "far" : "near") + " side is at " + number(distance) + " m";
+            // Where NDC z = 0 lands: the middle of OpenGL's [-1, 1] depth range, not its near plane.
+            const float ndcZeroDepth = 2.0f * sliceNear * sliceFar / (sliceNear + sliceFar);
+            if (!far && std::abs(-inView.z - ndcZeroDepth) < 1e-2f * ndcZeroDepth)
+                message += "; " + number(ndcZeroDepth) + " m is where NDC z = 0 lands, and OpenGL's NDC cube spans z "
+                           "from -1 (near) to +1 (far)";
+            return stoa::CheckResult::fail(message + " (docs: Fitting each cascade)");
+        }
+        const glm::vec2 expected(((k & 1) ? 1.0f : -1.0f) * tangent * aspect * distance,
+                                 ((k & 2) ? 1.0f : -1.0f) * tangent * distance);
+        if (glm::length(glm::vec2(inView) - expected) > 1e-3f * distance)
+            return stoa::CheckResult::fail(which + " lies at (" + number(inView.x) + ", " + number(inView.y) +
+                                           ") in view space; a corner of the field of view at that distance is at (" +
+                                           number(expected.x) + ", " + number(expected.y) +
+                                           ") (docs: Fitting each cascade)");
+    }
+    return stoa::CheckResult::pass("the eight corners lie on the slice's near and far sides, at the edges of the field of view");
+}
+
+stoa::CheckResult checkCascadeDepthReachesOccluders() {
+    const glm::vec3 light(0.3f, -1.0f, 0.2f);
+    const glm::vec3 sceneMin(-40.0f, 0.0f, -40.0f), sceneMax(40.0f, 30.0f, 40.0f);
+    // A slice near the ground, seen by a camera 1.7 m up; the scene's box rises far above it.
+    const glm::mat4 camera = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.7f, 0.0f));
+    const glm::mat4 matrix = stoa::cascadeLightMatrix(light, transformed(sliceShape(), camera), 1024, sceneMin, sceneMax);
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 world((corner & 1) ? sceneMax.x : sceneMin.x, (corner & 2) ? sceneMax.y : sceneMin.y,
+                              (corner & 4) ? sceneMax.z : sceneMin.z);
+        const glm::vec4 clip = matrix * glm::vec4(world, 1.0f);
+        const float depth = clip.z / clip.w;
+        if (depth < -1.0001f)
+            return stoa::CheckResult::fail("the scene's corner (" + number(world.x, 0) + ", " + number(world.y, 0) + ", " +
+                                           number(world.z, 0) + ") lies nearer the light than the box's near side "
+                                           "(NDC z " + number(depth) + " < -1): an occluder there would cast no "
+                                           "shadow into the slice; the depth range must reach towards the light to "
+                                           "the scene's bounds (docs: Fitting each cascade)");
+    }
+    return stoa::CheckResult::pass("every corner of the scene's box lies behind the box's near side, as seen from the light");
+}
+
+stoa::CheckResult checkTexelSnapping() {
+    const glm::vec3 light(0.45f, -1.0f, 0.3f);
+    const glm::vec3 sceneMin(-40.0f, 0.0f, -40.0f), sceneMax(40.0f, 12.0f, 40.0f);
+    const int mapSize = 512;
+    const glm::vec4 point(1.3f, 0.4f, -6.1f, 1.0f);   // a fixed point of the world
+    const std::array<glm::vec3, 8> shape = sliceShape();
+
+    auto texelOf = [&](const glm::mat4& matrix) {
+        const glm::vec4 clip = matrix * point;
+        return (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * static_cast<float>(mapSize);
+    };
+    // The box's side in world units: the light view rotates only, so row 0 of the
+    // matrix's 3x3 part is 2 / side times a unit vector.
+    auto sideOf = [](const glm::mat4& matrix) {
+        return 2.0f / glm::length(glm::vec3(matrix[0][0], matrix[1][0], matrix[2][0]));
+    };
+
+    const glm::mat4 start = stoa::cascadeLightMatrix(light, transformed(shape, glm::mat4(1.0f)), mapSize, sceneMin, sceneMax);
+    const glm::vec2 startTexel = texelOf(start);
+    const float side = sideOf(start);
+    const float texel = side / static_cast<float>(mapSize);
+    const glm::vec3 step(0.0137f, 0.0021f, -0.0093f);   // a camera step well under a texel
+    for (int k = 1; k <= 24; ++k) {
+        const glm::vec3 moved = step * static_cast<float>(k);
+        const glm::mat4 matrix = stoa::cascadeLightMatrix(light, transformed(shape, glm::translate(glm::mat4(1.0f), moved)),
+                                                          mapSize, sceneMin, sceneMax);
+        const glm::vec2 shift = texelOf(matrix) - startTexel;
+        const glm::vec2 fraction = glm::abs(shift - glm::round(shift));
+        if (std::max(fraction.x, fraction.y) > 0.02f)
+            return stoa::CheckResult::fail("moving the camera by " + number(glm::length(moved) * 100.0f, 1) +
+                                           " cm (a texel is " + number(texel * 100.0f, 1) +
+                                           " cm) moved a fixed point of the world by (" + number(shift.x) + ", " +
+                                           number(shift.y) + ") texels in the map, not by whole texels: the box's "
+                                           "origin must move in whole texels (docs: Texel snapping)");
+    }
+    for (int degrees = 10; degrees <= 80; degrees += 10) {
+        const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(static_cast<float>(degrees)), glm::vec3(0.0f, 1.0f, 0.0f));
+        const float turnedSide = sideOf(stoa::cascadeLightMatrix(light, transformed(shape, turn), mapSize, sceneMin, sceneMax));
+        if (std::abs(turnedSide - side) > 1e-4f * side)
+            return stoa::CheckResult::fail("turning the camera by " + std::to_string(degrees) + " degrees changed the box's side from " +
+                                           number(side, 3) + " m to " + number(turnedSide, 3) +
+                                           " m: the texel size must not depend on where the camera looks, or the "
+                                           "shadows swim as it turns (docs: Fitting each cascade, Texel snapping)");
+    }
+    return stoa::CheckResult::pass("the map moves by whole texels as the camera moves by less than one, and keeps its size as it turns");
+}
+
+} // namespace lab05

@@ -1,0 +1,33 @@
+#pragma once
+// Lab 05's property checks (the cases with a `check` key in cases.ini), for what
+// a still picture cannot show. See docs/labs/05_shadows.md, "Checks". Each calls
+// your functions on inputs of its own and tests a property the docs state.
+
+#include <stoa/lab/PropertyCheck.hpp>
+
+namespace stoa {
+class Program;
+}
+
+namespace lab05 {
+
+/// depth_pass_both_faces: renderShadowPass() writes the depth of a square whether
+/// its front or its back faces the light (docs: "The two passes").
+stoa::CheckResult checkDepthPassBothFaces(const stoa::Program& depthProgram);
+
+/// slice_corners: frustumSliceCorners() returns four corners at the slice's near
+/// distance and four at its far distance from the camera, spread as wide as the
+/// field of view and the aspect ratio say (docs: "Fitting each cascade").
+stoa::CheckResult checkSliceCorners();
+
+/// cascade_depth_reaches_occluders: cascadeLightMatrix()'s depth range reaches
+/// towards the light to every corner of the scene's box, so that an occluder
+/// outside the slice still casts into it (docs: "Fitting each cascade").
+stoa::CheckResult checkCascadeDepthReachesOccluders();
+
+/// texel_snapping: as the slice moves by less than a texel, a fixed world point
+/// moves through the map by whole texels only; as the slice turns, the box keeps
+/// its size (docs: "Texel snapping").
+stoa::CheckResult checkTexelSnapping();
+
+} // namespace lab05
