@@ -86,8 +86,29 @@ int runDeterminismCheck(const Options& options, const Environment& env) {
     });
 
     int differing = 0, failed = 0, skipped = 0, identical = 0;
-    for (const CaseCheck& check : checks) {
+    for (std::size_t caseIndex = 0; caseIndex < checks.size(); ++caseIndex) {
+        const CaseCheck& check = checks[caseIndex];
         const RenderOutcome& first = check.renders[0];
+        if (!cases[caseIndex].spec.check.empty()) {
+            // A property check draws nothing: its verdict must be the same in every run.
+            const bool same = std::all_of(check.renders.begin(), check.renders.end(), [&](const RenderOutcome& run) {
+                return run.status == first.status && run.reason == first.reason;
+            });
+            if (first.status == GradeStatus::NotAttempted) {
+                ++skipped;
+                env.out << check.name << ": skipped, not attempted (" << first.reason << ")\n";
+            } else if (first.status != GradeStatus::Passed && first.status != GradeStatus::Failed) {
+                ++failed;
+                env.out << check.name << ": FAILED to run the check: " << first.reason << "\n";
+            } else if (same) {
+                ++identical;
+                env.out << check.name << ": the same verdict in " << variants.size() << " runs (a property check)\n";
+            } else {
+                ++differing;
+                env.out << check.name << ": DIFFERS: the property check's verdict changes between runs\n";
+            }
+            continue;
+        }
         auto notRendered = std::find_if(check.renders.begin(), check.renders.end(),
                                         [](const RenderOutcome& render) { return !render.rendered; });
         if (notRendered != check.renders.end()) {

@@ -180,3 +180,34 @@ TEST_CASE("gradeCases keeps the order of the jobs and reports progress", "[grade
     CHECK(lines.back().rfind("[4/4] 01_transforms/", 0) == 0);
     CHECK(lines.back().find(" ... not attempted (") != std::string::npos);
 }
+
+TEST_CASE("gradeCase: a property check is graded by its exit status and says why", "[grader][case]") {
+    Fixture fixture;
+    auto check = [&](const std::string& body) {
+        CaseJob job = fixture.job(fixture.program("lab05_shadows", body), "no-reference-for-a-check.png");
+        job.spec.check = "texel_snapping";
+        job.spec.name = "texel_snapping";
+        return gradeCase(job, fixture.settings);
+    };
+
+    GradeResult holds = check("echo \"check $2: holds: the map moves by whole texels\"; exit 0");
+    CHECK(holds.status == GradeStatus::Passed);
+    CHECK(holds.points == 10);
+    CHECK(holds.propertyCheck);
+    CHECK(holds.reason == "holds: the map moves by whole texels");
+    CHECK(holds.referenceImage.empty());
+
+    GradeResult fails = check("echo \"check $2: does not hold: moved by 0.32 texels\"; exit 4");
+    CHECK(fails.status == GradeStatus::Failed);
+    CHECK(fails.points == 0);
+    CHECK(fails.reason == "does not hold: moved by 0.32 texels");
+    CHECK(fails.renderedImage.empty());
+
+    GradeResult stub = check("echo 'stoa: not implemented: cascadeLightMatrix()' >&2; exit 3");
+    CHECK(stub.status == GradeStatus::NotAttempted);
+    CHECK(stub.reason == "not implemented: cascadeLightMatrix()");
+
+    GradeResult crash = check("kill -SEGV $$");
+    CHECK(crash.status == GradeStatus::Error);
+    CHECK(crash.points == 0);
+}

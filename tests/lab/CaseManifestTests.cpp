@@ -359,3 +359,35 @@ TEST_CASE("LabManifest: find() and caseNames()", "[lab][manifest]") {
     CHECK(manifest.find("TWO") == nullptr);
     CHECK(LabManifest().caseNames().empty());
 }
+
+TEST_CASE("parseManifest: a property check is a case with a check key and no picture", "[lab][manifest]") {
+    const LabManifest manifest = parseManifest("lab = 05_test\n"
+                                               "[case sun]\n"
+                                               "resolution = 64 32\n"
+                                               "[case texel_snapping]\n"
+                                               "description = A property check\n"
+                                               "check = texel_snapping\n"
+                                               "points = 1\n"
+                                               "[case moon]\n",
+                                               "cases.ini");
+    REQUIRE(manifest.cases.size() == 3);
+    CHECK(manifest.cases[0].check.empty());
+    CHECK(manifest.cases[1].check == "texel_snapping");
+    CHECK(manifest.cases[1].points == 1.0);
+    // The check key is the parser's, not a scene parameter the lab must read.
+    CHECK_NOTHROW(manifest.cases[1].requireAllKeysUsed());
+    const std::vector<const CaseSpec*> pictures = manifest.pictureCases();
+    REQUIRE(pictures.size() == 2);
+    CHECK(pictures[0]->name == "sun");
+    CHECK(pictures[1]->name == "moon");
+
+    const auto bad = parseError(kHead + "check = texel snapping\n");
+    REQUIRE(bad);
+    CHECK(bad->line() == 4);
+    CHECK(contains(bad->message(), "expected 'check = NAME' with letters, digits and '_', got 'texel snapping'"));
+    // A misspelt key close to a typed one is suggested ("did you mean"), max_flip_mean and check included.
+    const LabManifest typo = parseManifest("lab = 05_test\n[case a]\nmax_flip_maen = 0.1\n", "cases.ini");
+    const auto unused = inputErrorFrom([&] { typo.cases[0].requireAllKeysUsed(); });
+    REQUIRE(unused);
+    CHECK(contains(unused->message(), "max_flip_mean"));
+}
