@@ -8,8 +8,10 @@
 #include <stoa/image/ImageCompare.hpp>
 
 #include <algorithm>
+#include <deque>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace stoa::grader {
@@ -27,14 +29,16 @@ std::string readFile(const std::filesystem::path& path) {
     return text.str();
 }
 
-// Rewrites mistake.txt for the images now in `folder`, and removes images of
-// cases the mistake no longer lists; an empty folder goes altogether.
-void finishMistakeFolder(const std::filesystem::path& folder, const MistakeFile& mistake, GallerySummary& summary,
-                         std::ostream& out) {
+// Rewrites mistake.txt for the images now in `folder` and the property checks
+// the mistake fails (`checks`: the lab's check cases; they have no image), and
+// removes images of cases the mistake no longer lists; an empty folder goes altogether.
+void finishMistakeFolder(const std::filesystem::path& folder, const MistakeFile& mistake,
+                         const std::set<std::string>& checks, GallerySummary& summary, std::ostream& out) {
     std::error_code error;
     std::vector<std::string> cases;
     for (const std::string& name : mistake.fails)
-        if (std::filesystem::is_regular_file(folder / (name + ".png"), error)) cases.push_back(name);
+        if (checks.count(name) > 0 || std::filesystem::is_regular_file(folder / (name + ".png"), error))
+            cases.push_back(name);
     if (std::filesystem::is_directory(folder, error)) {
         for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
             std::string stem = entry.path().stem().string();
@@ -49,6 +53,7 @@ void finishMistakeFolder(const std::filesystem::path& folder, const MistakeFile&
         if (std::filesystem::remove_all(folder, error) > 0) ++summary.removed;
         return;
     }
+    std::filesystem::create_directories(folder, error);
     std::filesystem::path info = folder / kGalleryInfoFile;
     std::string text = galleryInfoText(mistake, cases);
     if (readFile(info) != text) writeReportFile(info, text, "the mistake gallery's info file");
@@ -140,7 +145,28 @@ GallerySummary updateGallery(const std::vector<GalleryJob>& jobs, const std::vec
         }
         out << line << "\n";
     }
-    for (const auto& [folder, mistake] : folders) finishMistakeFolder(folder, *mistake, summary, out);
+    // The property checks of each lab, and the mistakes that fail one: their gallery
+    // entries list those checks (a mistake that fails checks only has no image at all).
+    std::map<std::string, std::set<std::string>> checks;
+    std::deque<MistakeFile> checkMistakes;
+    for (const PlannedLab& lab : labs) {
+        for (const CaseSpec& spec : lab.manifest.cases)
+            if (!spec.check.empty()) checks[lab.lab].insert(spec.name);
+        if (checks[lab.lab].empty()) continue;
+        for (MistakeFile& mistake : loadMistakes(env.sourceDir / "solutions" / lab.lab)) {
+            const bool failsACheck = std::any_of(mistake.fails.begin(), mistake.fails.end(),
+                                                 [&](const std::string& name) { return checks[lab.lab].count(name) > 0; });
+            if (!failsACheck || !isExecutable(mistakeProgram(env.binDir, lab.lab, mistake.name))) continue;
+            std::filesystem::path folder = referenceImagePath(env.sourceDir, lab.lab, "any").parent_path() / "mistakes" /
+                                           mistake.name;
+            if (folders.count(folder) == 0) {
+                checkMistakes.push_back(std::move(mistake));
+                folders[folder] = &checkMistakes.back();
+            }
+        }
+    }
+    for (const auto& [folder, mistake] : folders)
+        finishMistakeFolder(folder, *mistake, checks[mistake->lab], summary, out);
     if (pruneDeleted)
         for (const PlannedLab& lab : labs) pruneDeletedMistakes(lab, env, summary, out);
     return summary;

@@ -2,6 +2,8 @@
 // shaded by a light at the eye (shaders/basic/headlight.*), so that what is
 // graded is where things are, not how they are lit.
 
+#include "checks.hpp"
+
 #include <stoa/camera/CameraRig.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/lab/CaseManifest.hpp>
@@ -24,6 +26,11 @@ public:
 
     stoa::Camera& activeCamera() override { return m_cameras.active(); }
     void toggleCamera() override { m_cameras.toggle(); }
+
+    stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
+        if (spec.check == "camera_limits") return lab01::checkCameraLimits();
+        return Lab::runCheck(spec);
+    }
 
 private:
     stoa::Scene m_scene;

@@ -15,6 +15,7 @@
 //
 // Keys in the window: f switches between facet and smooth normals.
 
+#include "checks.hpp"
 #include "normals.hpp"
 
 #include <stoa/camera/CameraRig.hpp>
@@ -123,6 +124,11 @@ public:
 
     stoa::Camera& activeCamera() override { return m_cameras.active(); }
     void toggleCamera() override { m_cameras.toggle(); }
+
+    stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
+        if (spec.check == "degenerate_triangles") return lab03::checkDegenerateTriangles();
+        return Lab::runCheck(spec);
+    }
 
     bool keyPressed(unsigned char key) override {
         if (key != 'f') return false;

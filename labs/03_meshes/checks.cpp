@@ -1,0 +1,90 @@
+// Lab 03's property checks; see checks.hpp. Real meshes have degenerate
+// triangles (exporters leave slivers and repeated corners); the statue's
+// pictures would not show one bad normal among thousands.
+
+#include "checks.hpp"
+#include "normals.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace lab03 {
+
+namespace {
+
+std::string vectorText(const glm::vec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", v.x, v.y, v.z);
+    return text;
+}
+
+bool near(const glm::vec3& a, const glm::vec3& b) { return glm::length(a - b) < 1e-3f; }
+
+// Vertices 0-2: a good triangle, tilted (face normal (0, 0.71, 0.71)); 3-5: three
+// points on a line (zero area); 6-7: a triangle 6, 6, 7 (a zero-length edge);
+// 8: used by no triangle. Triangle 0, 1, 1 gives vertices 0 and 1 a zero edge too.
+stoa::Mesh degenerateMesh() {
+    stoa::Mesh mesh;
+    const glm::vec3 positions[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, -1}, {2, 0, 0}, {3, 0, 0},
+                                   {4, 0, 0}, {5, 0, 0}, {6, 1, 0}, {7, 0, 0}};
+    for (const glm::vec3& position : positions) {
+        stoa::Vertex vertex{};
+        vertex.position = position;
+        vertex.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+        mesh.vertices.push_back(vertex);
+    }
+    mesh.indices = {0, 1, 2, 3, 4, 5, 6, 6, 7, 0, 1, 1};
+    return mesh;
+}
+
+// The first problem with `normal`, or "" when it is the `expected` unit vector.
+std::string problemWith(const glm::vec3& normal, const glm::vec3& expected) {
+    if (!std::isfinite(normal.x) || !std::isfinite(normal.y) || !std::isfinite(normal.z))
+        return "is not finite, " + vectorText(normal);
+    if (!near(normal, expected)) return "is " + vectorText(normal) + ", expected " + vectorText(expected);
+    return "";
+}
+
+} // namespace
+
+stoa::CheckResult checkDegenerateTriangles() {
+    const glm::vec3 up(0.0f, 1.0f, 0.0f), tilted = glm::normalize(glm::vec3(0.0f, 1.0f, 1.0f));
+
+    const stoa::Mesh facets = stoa::facetNormals(degenerateMesh());
+    const glm::vec3 facetExpected[] = {tilted, up, up, up};
+    const char* const facetWhat[] = {"the good triangle", "the triangle of zero area", "the triangle with a zero edge",
+                                     "the triangle 0, 1, 1"};
+    if (facets.indices.size() != 12 || facets.vertices.size() != 12)
+        return stoa::CheckResult::fail("facetNormals() of a mesh of 4 triangles returned " +
+                                       std::to_string(facets.vertices.size()) + " vertices and " +
+                                       std::to_string(facets.indices.size()) +
+                                       " indices; expected 12 of each, 3 per triangle (docs: Facet normals)");
+    for (int t = 0; t < 4; ++t)
+        for (int k = 0; k < 3; ++k) {
+            const std::string problem = problemWith(facets.vertices[facets.indices[3 * t + k]].normal, facetExpected[t]);
+            if (!problem.empty())
+                return stoa::CheckResult::fail(std::string("facetNormals(): the normal of ") + facetWhat[t] + " " + problem +
+                                               "; a triangle of zero area gets +Y (docs: Facet normals)");
+        }
+
+    stoa::Mesh smooth = degenerateMesh();
+    stoa::smoothNormals(smooth);
+    const char* const what[] = {"vertex 0 (the good triangle, and a zero edge)", "vertex 1 (the good triangle, and a zero edge)",
+                                "vertex 2 (the good triangle)", "vertex 3 (zero area only)", "vertex 4 (zero area only)",
+                                "vertex 5 (zero area only)", "vertex 6 (a zero edge only)", "vertex 7 (a zero edge only)",
+                                "vertex 8 (no triangle)"};
+    for (std::size_t i = 0; i < smooth.vertices.size() && i < 9; ++i) {
+        const glm::vec3 expected = i < 3 ? tilted : up;
+        const std::string problem = problemWith(smooth.vertices[i].normal, expected);
+        if (!problem.empty())
+            return stoa::CheckResult::fail(std::string("smoothNormals(): the normal of ") + what[i] + " " + problem +
+                                           ": a degenerate triangle adds nothing, and a vertex that gets nothing is +Y "
+                                           "(docs: Smooth normals)");
+    }
+    return stoa::CheckResult::pass("degenerate triangles add nothing, and what gets nothing is +Y, in both functions");
+}
+
+} // namespace lab03
