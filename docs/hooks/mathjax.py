@@ -81,7 +81,7 @@ def on_config(config, **kwargs):
 
 
 def on_files(files, **kwargs):
-    # This hook lives under docs/ (the top level is fixed); it is no page of the site.
+    # The hooks live under docs/ (the top level is fixed); they are no pages of the site.
     for file in list(files):
         if file.src_path.replace(os.sep, "/").startswith("hooks/"):
             files.remove(file)
