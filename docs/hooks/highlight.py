@@ -6,6 +6,7 @@ while it builds. This hook writes the matching style sheet, site/css/pygments.cs
 mkdocs.yml's extra_css names: the pages load nothing from the network.
 """
 
+import importlib.util
 from pathlib import Path
 
 from mkdocs.exceptions import PluginError
@@ -15,9 +16,8 @@ SHEET = "css/pygments.css"
 
 
 def on_config(config, **kwargs):
-    try:
-        import pygments  # noqa: F401  (codehilite needs it too, and says nothing when it is missing)
-    except ImportError:
+    # codehilite needs it too, and says nothing when it is missing.
+    if importlib.util.find_spec("pygments") is None:
         raise PluginError("Pygments not found: the docs colour their code with it. Install Debian's "
                           "python3-pygments (sudo apt-get install python3-pygments, or .ci/install-deps.sh).")
     return config

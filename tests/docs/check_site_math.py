@@ -13,14 +13,16 @@ Checks that the docs' equations reach a reader typeset, with no network (docs/ho
 3. No page loads a script or a style sheet from http(s):// or //host: the site must work offline.
    Every local script and style sheet a page names exists in the site.
 4. The Markdown sources (SOURCE_DIR/docs): no equation holds a backslash before punctuation
-   (\\, \\{ \\\\ ...). GitHub's Markdown takes those as escapes before its math renderer sees them,
-   so the page reads differently there; write \\thinspace, \\lbrace, \\cr instead.
+   (\\, \\{ \\\\ ...), which GitHub's Markdown takes as an escape before its math renderer sees it
+   (write \\thinspace, \\lbrace, \\cr instead), nor a _ after a bracket or a space, which it may take
+   with a later _ for emphasis (\\hat{A}_1 = B_{1}); the page would read differently there.
 
 Prints every problem with its page or file and line; exits 1 when there is any.
 """
 
 import re
 import sys
+import unicodedata
 from html.parser import HTMLParser
 from pathlib import Path
 from urllib.parse import urljoin, urlparse
@@ -45,6 +47,11 @@ MATHJAX_LOADS = [
 ] + [f"fonts/HTML-CSS/TeX/woff/MathJax_{font}.woff" for font in (
     "Main-Regular", "Main-Italic", "Math-Italic", "SansSerif-Regular", "Typewriter-Regular",
     "Size1-Regular", "Size2-Regular", "Size3-Regular", "Size4-Regular")]
+
+
+def punctuation(character):
+    """CommonMark's punctuation, for its emphasis rules: Unicode punctuation and symbols."""
+    return unicodedata.category(character).startswith(("P", "S"))
 
 
 class Page(HTMLParser):
@@ -148,11 +155,35 @@ for path in sorted((source / "docs").rglob("*.md")):
     text = "\n".join(kept)
     for match in re.finditer(r"\$\$(.+?)\$\$|\$([^$\n]+?)\$", text, re.S):
         math = match.group(1) if match.group(1) is not None else match.group(2)
+        start = match.start() + (2 if match.group(1) is not None else 1)
         for escape in re.finditer(r"\\[!-/:-@\[-`{-~]", math):
-            line = text.count("\n", 0, match.start() + (2 if match.group(1) is not None else 1) + escape.start()) + 1
+            line = text.count("\n", 0, start + escape.start()) + 1
             problems.append(f"{path.relative_to(source)}:{line}: {escape.group()} in an equation: GitHub's Markdown "
                             "reads it as an escape before the math renderer sees it; write \\thinspace, "
                             "\\lbrace/\\rbrace, \\cr (rows), \\text{...} instead")
+
+    # Emphasis: GitHub runs its Markdown over the equations first, so a _ that can open an emphasis
+    # (after a bracket: \hat{A}_1) and a later one that can close it (B_{1}) in the same paragraph
+    # turn the text between them italic, and the equation breaks. The rules are CommonMark's.
+    for block in re.finditer(r"(?:[^\n]|\n(?![ \t]*\n))+", text):
+        paragraph = block.group()
+        if "$" not in paragraph:
+            continue
+        opener = None
+        for underscore in re.finditer(r"_", paragraph):
+            before = paragraph[underscore.start() - 1] if underscore.start() else " "
+            after = paragraph[underscore.end()] if underscore.end() < len(paragraph) else " "
+            left = not after.isspace() and (not punctuation(after) or before.isspace() or punctuation(before))
+            right = not before.isspace() and (not punctuation(before) or after.isspace() or punctuation(after))
+            if opener is None and left and (not right or punctuation(before)):
+                opener = underscore.start()
+            elif opener is not None and right and (not left or punctuation(after)):
+                line = text.count("\n", 0, block.start() + opener) + 1
+                context = paragraph[max(0, opener - 25):underscore.end() + 5].replace("\n", " ")
+                problems.append(f"{path.relative_to(source)}:{line}: GitHub's Markdown would read the _ "
+                                f"pair in ...{context}... as emphasis and break the equation: put a letter "
+                                "or digit before the first _ (name the bracketed vector: q = ..., q_z)")
+                opener = None
 
 for problem in problems:
     print(problem)

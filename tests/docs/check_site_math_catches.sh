@@ -16,7 +16,7 @@ cp -r "$source/docs" "$work/source/"
 sed -i '0,/<\/h1>/s//<\/h1><p>left raw: $$I_{out}$$<\/p>/' "$work/site/labs/02_shading/index.html"
 rm "$work/site/mathjax/jax/output/CommonHTML/autoload/mtable.js"
 sed -i 's|</head>|<script src="https://cdn.example.org/mathjax.js"></script></head>|' "$work/site/index.html"
-printf '\nA thin space: $a \\, b$.\n' >> "$work/source/docs/labs/03_meshes.md"
+printf '\nA thin space: $a \\, b$.\n\nA hat: $\\hat{A}_1 = B_{1}$.\n' >> "$work/source/docs/labs/03_meshes.md"
 
 status=0
 "$python" "$source/tests/docs/check_site_math.py" "$work/site" "$work/source" > "$work/broken.txt" || status=$?
@@ -24,7 +24,7 @@ cat "$work/broken.txt"
 [ "$status" -eq 1 ] || { echo "FAIL: check_site_math.py exited with $status on a broken site (expected 1)"; exit 1; }
 for expected in 'labs/02_shading/index.html:' 'raw $$ in the text' 'autoload/mtable.js: missing' \
                 'index.html:' 'loads https://cdn.example.org/mathjax.js from the network' \
-                'docs/labs/03_meshes.md:' '\, in an equation'; do
+                'docs/labs/03_meshes.md:' '\, in an equation' 'the _ pair in ... A hat: $\hat{A}_1 = B_{1}$'; do
   grep -qF "$expected" "$work/broken.txt" || { echo "FAIL: no problem reported matching '$expected'"; exit 1; }
 done
 echo "PASS: every planted problem was reported"
