@@ -131,18 +131,18 @@ stoa::CheckResult checkCascadeDepthReachesOccluders() {
     // A slice near the ground, seen by a camera 1.7 m up; the scene's box rises far above it.
     const glm::mat4 camera = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.7f, 0.0f));
     const glm::mat4 matrix = stoa::cascadeLightMatrix(light, transformed(sliceShape(), camera), 1024, sceneMin, sceneMax);
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 world((corner & 1) ? sceneMax.x : sceneMin.x, (corner & 2) ? sceneMax.y : sceneMin.y,
-                              (corner & 4) ? sceneMax.z : sceneMin.z);
-        const glm::vec4 clip = matrix * glm::vec4(world, 1.0f);
-        const float depth = clip.z / clip.w;
-        if (depth < -1.0001f)
-            return stoa::CheckResult::fail("the scene's corner (" + number(world.x, 0) + ", " + number(world.y, 0) + ", " +
-                                           number(world.z, 0) + ") lies nearer the light than the box's near side "
-                                           "(NDC z " + number(depth) + " < -1): an occluder there would cast no "
-                                           "shadow into the slice; the depth range must reach towards the light to "
-                                           "the scene's bounds (docs: Fitting each cascade)");
-    }
+    for (float x : {sceneMin.x, sceneMax.x})
+        for (float y : {sceneMin.y, sceneMax.y})
+            for (float z : {sceneMin.z, sceneMax.z}) {
+                const glm::vec4 clip = matrix * glm::vec4(x, y, z, 1.0f);
+                const float depth = clip.z / clip.w;
+                if (depth < -1.0001f)
+                    return stoa::CheckResult::fail(
+                        "the scene's corner (" + number(x, 0) + ", " + number(y, 0) + ", " + number(z, 0) +
+                        ") lies nearer the light than the box's near side (NDC z " + number(depth) +
+                        " < -1): an occluder there would cast no shadow into the slice; the depth range must "
+                        "reach towards the light to the scene's bounds (docs: Fitting each cascade)");
+            }
     return stoa::CheckResult::pass("every corner of the scene's box lies behind the box's near side, as seen from the light");
 }
 
