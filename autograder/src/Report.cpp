@@ -167,6 +167,8 @@ std::string formatPoints(double points) {
 void printReport(std::ostream& out, const std::vector<GradeResult>& results, const Totals& totals) {
     std::size_t labWidth = 3, caseWidth = 4, statusWidth = 6, pointsWidth = 6, pixelsWidth = 16, flipWidth = 9;
     bool uniform = !results.empty() && sameThresholds(results);
+    bool known = std::any_of(results.begin(), results.end(),
+                             [](const GradeResult& result) { return result.maxFlipMean > 0.0; });
     auto pointsText = [](const GradeResult& result) {
         return formatPoints(result.points) + " / " + formatPoints(result.maxPoints);
     };
@@ -176,15 +178,15 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
         statusWidth = std::max(statusWidth, std::string(statusName(result.status)).size());
         pointsWidth = std::max(pointsWidth, pointsText(result).size());
     }
-    std::string pixelsLimit = uniform ? "pass: <= " + percentText(results.front().maxBadFraction) : "";
-    std::string flipLimit = uniform ? "pass: <= " + flipText(results.front().maxFlipMean) : "";
+    std::string pixelsLimit = uniform && known ? "pass: <= " + percentText(results.front().maxBadFraction) : "";
+    std::string flipLimit = uniform && known ? "pass: <= " + flipText(results.front().maxFlipMean) : "";
     pixelsWidth = std::max(pixelsWidth, pixelsLimit.size());
     std::size_t indent = labWidth + 2;
 
     out << padded("lab", labWidth) << "  " << padded("case", caseWidth) << "  " << padded("status", statusWidth)
         << "  " << padded("points", pointsWidth) << "  " << padded("differing pixels", pixelsWidth) << "  "
         << "FLIP mean\n";
-    if (uniform)
+    if (uniform && known)
         out << std::string(labWidth + caseWidth + statusWidth + pointsWidth + 8, ' ') << "  "
             << padded(pixelsLimit, pixelsWidth) << "  " << flipLimit << "\n";
     std::size_t columns = labWidth + caseWidth + statusWidth + pointsWidth + pixelsWidth + flipWidth + 10;
@@ -210,7 +212,7 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
                           padded(pointsText(result), pointsWidth) + "  ";
         if (result.metrics) {
             std::string pixels = pixelsCell(result), flip = flipCell(result);
-            if (!uniform) {
+            if (!uniform && known) {
                 pixels += " (<= " + percentText(result.maxBadFraction) + ")";
                 flip += " (<= " + flipText(result.maxFlipMean) + ")";
             }
