@@ -174,8 +174,13 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
     };
     for (const GradeResult& result : results) {
         labWidth = std::max(labWidth, result.lab.size());
-        caseWidth = std::max(caseWidth, caseLabel(result).size());
         statusWidth = std::max(statusWidth, std::string(statusName(result.status)).size());
+        if (result.counted && collapsed(totals, result.lab)) {   // its one line says "(N cases)" and the lab's points
+            caseWidth = std::max<std::size_t>(caseWidth, 10);
+            pointsWidth = std::max<std::size_t>(pointsWidth, 7);
+            continue;
+        }
+        caseWidth = std::max(caseWidth, caseLabel(result).size());
         pointsWidth = std::max(pointsWidth, pointsText(result).size());
     }
     std::string pixelsLimit = uniform && known ? "pass: <= " + percentText(results.front().maxBadFraction) : "";
@@ -288,6 +293,7 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
 
     out << "\n";
     for (const LabTotals& lab : totals.labs) {
+        if (lab.nothingAttempted() && !lab.hasCascade) continue;   // its one line above has the points
         out << padded(lab.lab, labWidth) << "  " << formatPoints(lab.points) << " / " << formatPoints(lab.maxPoints)
             << " points  (" << lab.statuses.describe() << ")\n";
         if (lab.hasCascade)
