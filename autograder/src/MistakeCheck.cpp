@@ -150,6 +150,11 @@ int runCheckMistakes(const Options& options, const Environment& env) {
                                            lab.manifest.caseNames() + ")";
             std::vector<CaseJob> labJobs =
                 caseJobs(lab, program, env.sourceDir, workDir / programFolder / (lab.lab + "." + run.mistake.name));
+            // The gallery has no pictures of hidden cases, so they carry no hint: --check-hints skips them.
+            if (outOfGallery)
+                labJobs.erase(std::remove_if(labJobs.begin(), labJobs.end(),
+                                             [](const CaseJob& job) { return job.spec.visibility == Visibility::Hidden; }),
+                              labJobs.end());
             run.firstJob = jobs.size();
             run.jobCount = labJobs.size();
             jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
