@@ -1,5 +1,7 @@
 #include "CaseRunner.hpp"
 
+#include "Difference.hpp"
+
 #include <stoa/core/InputError.hpp>
 #include <stoa/image/ImageCompare.hpp>
 
@@ -141,6 +143,8 @@ GradeResult ungradedResult(const CaseJob& job) {
     result.visibility = job.spec.visibility;
     result.propertyCheck = !job.spec.check.empty();
     if (!result.propertyCheck) result.referenceImage = job.reference;
+    result.maxBadFraction = job.spec.compare.maxBadFraction;
+    result.maxFlipMean = job.spec.compare.maxFlipMean;
     return result;
 }
 
@@ -209,6 +213,7 @@ GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, Reference
             return result;
         }
         result.status = GradeStatus::Failed;
+        result.difference = describeDifference(render.image, reference, job.spec.compare);
         try {
             std::filesystem::path heatMap = job.workDir / "heatmap.png";
             // From the comparison already made: FLIP does not run twice.

@@ -10,7 +10,7 @@ namespace {
 
 const char* const kOptionList =
     "--lab, --case, --bin-dir, --backend, --json, --html, --junit, --timeout, --jobs, --work-dir, --expect, "
-    "--update-references, --check-mistakes, --determinism, --help";
+    "--update-references, --check-mistakes, --check-hints, --determinism, --write-heatmap-legend, --help";
 
 double parsePositiveNumber(const std::string& option, const std::string& text) {
     errno = 0;
@@ -101,6 +101,11 @@ Options parseCommandLine(const std::vector<std::string>& arguments) {
         } else if (option == "--check-mistakes") {
             noValue();
             checkMistakes = true;
+        } else if (option == "--check-hints") {
+            options.outOfGalleryDir = takeValue("a folder of mistakes outside the gallery (<lab>/mistakes/*.mistake)");
+            checkMistakes = true;
+        } else if (option == "--write-heatmap-legend") {
+            options.heatMapLegend = takeValue("a PNG file to write");
         } else if (option == "--help" || option == "-h") {
             noValue();
             help = true;
@@ -123,10 +128,17 @@ Options parseCommandLine(const std::vector<std::string>& arguments) {
     if (determinism && (updateReferences || checkMistakes))
         throw UsageError("--determinism cannot be combined with --update-references or --check-mistakes");
     if (determinism) options.mode = Mode::Determinism;
+    if (!options.heatMapLegend.empty()) {
+        if (updateReferences || checkMistakes || determinism)
+            throw UsageError("--write-heatmap-legend cannot be combined with another mode");
+        options.mode = Mode::HeatMapLegend;
+    }
     if (options.mode != Mode::Grade) {
-        const char* modeName = updateReferences ? "--update-references"
-                               : checkMistakes  ? "--check-mistakes"
-                                                : "--determinism";
+        const char* modeName = updateReferences                   ? "--update-references"
+                               : !options.outOfGalleryDir.empty() ? "--check-hints"
+                               : checkMistakes                    ? "--check-mistakes"
+                               : determinism                      ? "--determinism"
+                                                                  : "--write-heatmap-legend";
         if (options.expect) throw UsageError(std::string("--expect only applies to grading, not to ") + modeName);
         if (!options.jsonFile.empty())
             throw UsageError(std::string("--json only applies to grading, not to ") + modeName);
@@ -147,6 +159,9 @@ usage:
   stoa-grade [--lab NN_name|NN]... [--case NAME]... [options]   grade (every built lab by default)
   stoa-grade --update-references [--lab ...] [--case ...]       write reference images (solutions build)
   stoa-grade --check-mistakes [--lab ...]                       check that each planted mistake is caught
+  stoa-grade --check-hints DIR [--lab ...]                      check that mistakes outside the gallery (DIR/<lab>/mistakes/)
+                                                                get no hint naming another cause
+  stoa-grade --write-heatmap-legend FILE                        write the heat map's colour legend as a PNG
   stoa-grade --determinism [--lab ...] [--case ...]             render each case twice and with LP_NUM_THREADS=1
                                                                 and 2; exit 1 on any difference
   stoa-grade --help

@@ -6,7 +6,9 @@
 //              [--expect pass|not-attempted]
 //   stoa-grade --update-references [--lab ...] [--case ...]
 //   stoa-grade --check-mistakes [--lab ...]
+//   stoa-grade --check-hints DIR [--lab ...]
 //   stoa-grade --determinism [--lab ...] [--case ...]
+//   stoa-grade --write-heatmap-legend FILE
 //   stoa-grade --help
 //
 // Options take their value as the next argument or after '=' (--jobs=4).
@@ -28,7 +30,7 @@ public:
     explicit UsageError(const std::string& message) : InputError("", 0, message) {}
 };
 
-enum class Mode { Grade, UpdateReferences, CheckMistakes, Determinism, Help };
+enum class Mode { Grade, UpdateReferences, CheckMistakes, Determinism, HeatMapLegend, Help };
 
 struct Options {
     Mode mode = Mode::Grade;
@@ -43,6 +45,9 @@ struct Options {
     int jobs = 1;                             // cases rendered at once
     std::filesystem::path workDir;            // empty = a fresh folder under the system's temp dir
     std::optional<GradeStatus> expect;        // Passed or NotAttempted: exit 1 unless every case has it
+    std::filesystem::path outOfGalleryDir;    // --check-hints DIR: mistakes outside the gallery
+                                              // (DIR/<lab>/mistakes/*.mistake), mode CheckMistakes
+    std::filesystem::path heatMapLegend;      // --write-heatmap-legend FILE: mode HeatMapLegend
 };
 
 /// Parses the arguments after the program name. Throws UsageError naming the

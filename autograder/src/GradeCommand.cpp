@@ -121,10 +121,7 @@ int runGrade(const Options& options, const Environment& env) {
 
     Totals totals = summarize(results);
     env.out << "\n";
-    printReport(env.out, results, totals);
-    std::vector<std::string> hintLines = hints(totals);
-    if (!hintLines.empty()) env.out << "\n";
-    for (const std::string& hint : hintLines) env.out << hint << "\n";
+    printReport(env.out, results, totals);   // a lab where nothing was attempted says where to start
 
     if (!options.jsonFile.empty()) {
         writeResultsJson(options.jsonFile, results, totals, seconds, summaryText(totals));
@@ -141,10 +138,14 @@ int runGrade(const Options& options, const Environment& env) {
         env.out << "wrote " << options.junitFile.string() << "\n";
     }
 
+    // The folder is named only when it holds a picture (after a compile error it holds none).
+    bool rendered = std::any_of(results.begin(), results.end(), [](const GradeResult& result) {
+        return !result.renderedImage.empty() || !result.heatMapImage.empty();
+    });
     bool keep = !options.workDir.empty() || std::any_of(results.begin(), results.end(), worthKeeping);
-    if (keep) {
+    if (keep && rendered) {
         env.out << "rendered images and heat maps: " << workDir.string() << "\n";
-    } else {
+    } else if (options.workDir.empty()) {
         std::error_code ignored;
         std::filesystem::remove_all(workDir, ignored);
     }

@@ -50,12 +50,19 @@ struct GradeResult {
     std::filesystem::path referenceImage;
     std::optional<CompareMetrics> metrics; // set when the image was compared with the reference
     bool propertyCheck = false;            // a property check (cases.ini `check`): no picture, `reason` says why
+    double maxBadFraction = 0.0;           // the case's pass thresholds (CompareOptions): share of
+    double maxFlipMean = 0.0;              // differing pixels, FLIP mean
+    std::string difference;                // a failed case: where the picture differs and how much
+                                           // ("23% of the pixels, most in the top left; darker there")
 
-    // A failed case whose image is closer to a known mistake's (the lab's
-    // mistake gallery) than to the reference carries that mistake's hint.
-    std::string hint;                      // the mistake's `hint:` text; empty when no mistake is closer
+    // A failed case whose image is much closer to a known mistake's (the lab's
+    // mistake gallery) than to the reference, in a lab whose passed and failed
+    // cases agree with that mistake, carries its hint (the rule: Hints.hpp).
+    std::string hint;                      // the mistake's `hint:` text; empty when no mistake matches
     std::string hintDocs;                  // "docs/labs/02_shading.md#the-half-vector"; empty when none
     std::string hintMistake;               // the mistake's name, "no_half_vector"
+    std::filesystem::path hintImage;       // the gallery's picture of this case for that mistake
+    double hintDistance = -1.0;            // FLIP mean of the student's picture against it
 
     // Cascades (Cascade.hpp): a lab that uses earlier labs is graded twice where
     // solutions exist, with the student's own earlier labs and with their

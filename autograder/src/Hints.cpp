@@ -24,18 +24,44 @@ std::string readText(const std::filesystem::path& path) {
 
 const std::vector<GalleryImage> kNoImages;
 
-// Hints for one failed case; leaves the result as it is when anything is missing.
-void addHint(GradeResult& result, const CaseJob& job, const std::vector<GalleryImage>& images) {
-    if (result.status != GradeStatus::Failed || result.renderedImage.empty() || images.empty()) return;
+// One failed case's distances to the gallery images of its case.
+struct CaseDistances {
+    bool measured = false;                     // the images were read and compared
+    CompareMetrics toReference;
+    std::vector<CompareMetrics> toMistake;     // per gallery image of the case; badFraction 1 when of another size
+};
+
+CaseDistances measure(const GradeResult& result, const CaseJob& job, const std::vector<GalleryImage>& images,
+                      const std::vector<std::string>& ruledOut) {
+    CaseDistances distances;
+    if (result.status != GradeStatus::Failed || result.renderedImage.empty() || images.empty()) return distances;
     Image rendered = Image::load(result.renderedImage);
-    Image reference;
-    if (!result.metrics) reference = Image::load(job.reference);
-    std::optional<std::size_t> closest = closestMistake(rendered, reference, images, job.spec.compare, result.metrics);
-    if (!closest) return;
-    const KnownMistake& mistake = images[*closest].mistake;
-    result.hint = mistake.hint;
-    result.hintDocs = docsPath(mistake.docs);
-    result.hintMistake = mistake.name;
+    distances.toReference = result.metrics ? *result.metrics
+                                           : metricsOf(compareImages(rendered, Image::load(job.reference),
+                                                                     job.spec.compare));
+    distances.toMistake.resize(images.size());
+    for (std::size_t k = 0; k < images.size(); ++k) {
+        const Image& image = images[k].image;
+        bool skip = std::find(ruledOut.begin(), ruledOut.end(), images[k].mistake.name) != ruledOut.end();
+        if (skip || image.width() != rendered.width() || image.height() != rendered.height()) continue;
+        distances.toMistake[k] = metricsOf(compareImages(rendered, image, job.spec.compare));
+    }
+    distances.measured = true;
+    return distances;
+}
+
+double ratio(const CompareMetrics& toMistake, const CompareMetrics& toReference) {
+    if (toMistake.flipMean >= 0.0 && toReference.flipMean > 0.0) return toMistake.flipMean / toReference.flipMean;
+    if (toReference.badFraction > 0.0) return toMistake.badFraction / toReference.badFraction;
+    return 1.0;
+}
+
+void clearHint(GradeResult& result) {
+    result.hint.clear();
+    result.hintDocs.clear();
+    result.hintMistake.clear();
+    result.hintImage.clear();
+    result.hintDistance = -1.0;
 }
 
 } // namespace
@@ -44,6 +70,21 @@ bool isCloser(const CompareMetrics& a, const CompareMetrics& b) {
     if (a.flipMean >= 0.0 && b.flipMean >= 0.0 && a.flipMean != b.flipMean) return a.flipMean < b.flipMean;
     if (a.badFraction != b.badFraction) return a.badFraction < b.badFraction;
     return a.meanError < b.meanError;
+}
+
+bool clearlyCloser(const CompareMetrics& toMistake, const CompareMetrics& toReference) {
+    if (toMistake.flipMean >= 0.0 && toReference.flipMean >= 0.0)
+        return toReference.flipMean > 0.0 && toMistake.flipMean <= kHintMargin * toReference.flipMean;
+    return toReference.badFraction > 0.0 && toMistake.badFraction <= kHintMargin * toReference.badFraction;
+}
+
+bool patternAgrees(const std::vector<std::string>& mistakeFails,
+                   const std::vector<std::pair<std::string, GradeStatus>>& statuses) {
+    for (const auto& [name, status] : statuses) {
+        bool mistakeFailsIt = std::find(mistakeFails.begin(), mistakeFails.end(), name) != mistakeFails.end();
+        if (mistakeFailsIt && status == GradeStatus::Passed) return false;   // it would have failed
+    }
+    return true;
 }
 
 std::string galleryInfoText(const MistakeFile& mistake, const std::vector<std::string>& cases) {
@@ -67,7 +108,8 @@ std::vector<KnownMistake> loadGallery(const std::filesystem::path& referenceDir)
         std::filesystem::path info = entry.path() / kGalleryInfoFile;
         if (!entry.is_directory() || !std::filesystem::is_regular_file(info)) continue;
         MistakeFile header = parseMistakeHeader(readText(info), info.string());
-        gallery.push_back(KnownMistake{entry.path().filename().string(), header.hint, header.docs, entry.path()});
+        gallery.push_back(
+            KnownMistake{entry.path().filename().string(), header.hint, header.docs, entry.path(), header.fails});
     }
     std::sort(gallery.begin(), gallery.end(),
               [](const KnownMistake& a, const KnownMistake& b) { return a.name < b.name; });
@@ -83,7 +125,8 @@ std::optional<std::size_t> closestMistake(const Image& rendered, const Image& re
         const Image& image = gallery[i].image;
         if (image.width() != rendered.width() || image.height() != rendered.height()) continue;
         CompareMetrics distance = metricsOf(compareImages(rendered, image, options));
-        if (isCloser(distance, best)) {
+        if (!clearlyCloser(distance, referenceDistance ? *referenceDistance : best)) continue;
+        if (!closest || isCloser(distance, best)) {
             best = distance;
             closest = i;
         }
@@ -141,19 +184,66 @@ std::size_t HintGallery::imageCount() const {
 void addHints(std::vector<GradeResult>& results, const std::vector<CaseJob>& jobs, const HintGallery& gallery,
               int parallelJobs) {
     std::size_t count = std::min(results.size(), jobs.size());
+    for (std::size_t i = 0; i < count; ++i) clearHint(results[i]);
+
+    // Rule (b) first, per program: the mistakes its statuses rule out need no picture compared.
+    std::map<std::filesystem::path, std::vector<std::pair<std::string, GradeStatus>>> statuses;
+    for (std::size_t i = 0; i < count; ++i)
+        statuses[jobs[i].program].emplace_back(results[i].caseName, results[i].status);
+    std::map<std::filesystem::path, std::vector<std::string>> ruledOut;   // program -> mistake names
+    for (std::size_t i = 0; i < count; ++i)
+        for (const GalleryImage& image : gallery.imagesFor(i)) {
+            std::vector<std::string>& out = ruledOut[jobs[i].program];
+            if (std::find(out.begin(), out.end(), image.mistake.name) == out.end() &&
+                !patternAgrees(image.mistake.fails, statuses[jobs[i].program]))
+                out.push_back(image.mistake.name);
+        }
+
+    // Rule (a): the pictures of every failed case against its gallery images.
+    std::vector<CaseDistances> distances(count);
     std::vector<std::size_t> failed;
     for (std::size_t i = 0; i < count; ++i)
         if (results[i].status == GradeStatus::Failed && !gallery.imagesFor(i).empty()) failed.push_back(i);
+    for (std::size_t i : failed) ruledOut[jobs[i].program];   // no insertion below, from several threads
     forEachInParallel(failed.size(), parallelJobs, [&](std::size_t k) {
         std::size_t i = failed[k];
         try {
-            addHint(results[i], jobs[i], gallery.imagesFor(i));
+            distances[i] = measure(results[i], jobs[i], gallery.imagesFor(i), ruledOut.at(jobs[i].program));
         } catch (const std::exception&) {
-            results[i].hint.clear();
-            results[i].hintDocs.clear();
-            results[i].hintMistake.clear();
+            distances[i] = CaseDistances{};   // an image that does not read: this case says nothing
         }
     });
+    // A mistake whose picture is not clearly closer on one of its failed cases is out for the whole program.
+    for (std::size_t i : failed) {
+        if (!distances[i].measured) continue;
+        const std::vector<GalleryImage>& images = gallery.imagesFor(i);
+        for (std::size_t k = 0; k < images.size(); ++k) {
+            std::vector<std::string>& out = ruledOut[jobs[i].program];
+            if (std::find(out.begin(), out.end(), images[k].mistake.name) != out.end()) continue;
+            if (!clearlyCloser(distances[i].toMistake[k], distances[i].toReference))
+                out.push_back(images[k].mistake.name);
+        }
+    }
+
+    for (std::size_t i : failed) {
+        if (!distances[i].measured) continue;
+        const std::vector<GalleryImage>& images = gallery.imagesFor(i);
+        const std::vector<std::string>& out = ruledOut[jobs[i].program];
+        std::optional<std::size_t> best;
+        for (std::size_t k = 0; k < images.size(); ++k) {
+            if (std::find(out.begin(), out.end(), images[k].mistake.name) != out.end()) continue;
+            if (!best || ratio(distances[i].toMistake[k], distances[i].toReference) <
+                             ratio(distances[i].toMistake[*best], distances[i].toReference))
+                best = k;
+        }
+        if (!best) continue;
+        const KnownMistake& mistake = images[*best].mistake;
+        results[i].hint = mistake.hint;
+        results[i].hintDocs = docsPath(mistake.docs);
+        results[i].hintMistake = mistake.name;
+        results[i].hintImage = mistake.imageFor(jobs[i].spec.name);
+        results[i].hintDistance = distances[i].toMistake[*best].flipMean;
+    }
 }
 
 void addHints(std::vector<GradeResult>& results, const std::vector<CaseJob>& jobs, int parallelJobs) {

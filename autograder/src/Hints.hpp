@@ -1,7 +1,27 @@
 #pragma once
-// Hints from the known-mistake gallery: when a student's failed image is
-// closer to a planted mistake's render than to the reference, the result names
-// that mistake, its hint and its docs section.
+// Hints from the known-mistake gallery. A wrong hint is worse than none, so a
+// failed case names a known mistake only when both hold:
+//
+//   (a) the picture: on every case the mistake fails (its gallery images) that
+//       the student's program failed too, the student's picture is closer to the
+//       mistake's picture than to the reference by a clear margin: its FLIP mean
+//       against the mistake's picture is at most kHintMargin (one third) of its
+//       FLIP mean against the reference;
+//   (b) the pattern: no case the mistake fails (per its gallery) passed for the
+//       student; one that did rules the mistake out. A case the student failed
+//       that the mistake is not known to fail does not rule it out: the gallery
+//       records only the cases a mistake fails (it is never rendered for the
+//       others, and never for hidden cases), a student may have two mistakes,
+//       and that case gets no hint from this mistake anyway -- the hint goes
+//       only on the mistake's own cases, where (a) holds on every one of them.
+//       Cases that were not graded, not attempted or errors say nothing either way.
+//
+// Among the mistakes that pass both, each case takes the one whose picture is
+// closest. A failed case without a hint still says where its picture differs and
+// how much (GradeResult::difference, from describeDifference()).
+//
+// A gallery entry's hint describes the symptom and the known causes with their
+// files, so that it stays true for neighbours of the planted cause.
 //
 // The gallery lives next to the references (written by
 // `stoa-grade --update-references` from a solutions build):
@@ -36,15 +56,30 @@ struct KnownMistake {
     std::string hint;
     std::string docs;                  // "labs/02_shading.md#the-half-vector", as in the .mistake file
     std::filesystem::path folder;      // <referenceDir>/mistakes/<name>
+    std::vector<std::string> fails;    // the cases it fails, which have gallery images (its info file's fails:)
 
     /// <folder>/<caseName>.png (it may not exist: a mistake renders only the cases it fails).
     std::filesystem::path imageFor(const std::string& caseName) const { return folder / (caseName + ".png"); }
 };
 
+/// How much closer to a mistake's picture than to the reference a student's
+/// picture must be, as a ratio of FLIP means: rule (a) above.
+constexpr double kHintMargin = 1.0 / 3.0;
+
 /// True when `a` (a comparison's figures) is strictly closer than `b`: by the
 /// FLIP mean when both have one (>= 0) and they differ, else by the fraction of
 /// bad pixels, then by the mean error of the shift-tolerant gate.
 bool isCloser(const CompareMetrics& a, const CompareMetrics& b);
+
+/// Rule (a) for one case: `toMistake` (the student's picture against the
+/// mistake's) is within kHintMargin of `toReference`, by FLIP mean when both
+/// have one, else by the fraction of pixels beyond the tolerance.
+bool clearlyCloser(const CompareMetrics& toMistake, const CompareMetrics& toReference);
+
+/// Rule (b): whether the statuses of one program's cases (case name -> status)
+/// agree with a mistake that fails `mistakeFails`.
+bool patternAgrees(const std::vector<std::string>& mistakeFails,
+                   const std::vector<std::pair<std::string, GradeStatus>>& statuses);
 
 /// The gallery info file's text for `mistake`, parseable by parseMistakeHeader().
 /// `cases` are the cases it has images for.
@@ -80,9 +115,10 @@ private:
 };
 
 /// The index in `gallery` of the mistake `rendered` is closest to, when that
-/// one is strictly closer than `reference`; nullopt otherwise (also for an
-/// empty gallery). Images of another size than `rendered` are skipped.
-/// `referenceDistance` is the rendered-vs-reference distance when known.
+/// one is clearly closer than `reference` (clearlyCloser(), rule (a) for one
+/// case); nullopt otherwise (also for an empty gallery). Images of another size
+/// than `rendered` are skipped. `referenceDistance` is the rendered-vs-reference
+/// distance when known.
 std::optional<std::size_t> closestMistake(const Image& rendered, const Image& reference,
                                           const std::vector<GalleryImage>& gallery, const CompareOptions& options,
                                           const std::optional<CompareMetrics>& referenceDistance = std::nullopt);
@@ -91,12 +127,12 @@ std::optional<std::size_t> closestMistake(const Image& rendered, const Image& re
 /// ("" for ""; a leading "docs/" or "/" is not doubled).
 std::string docsPath(const std::string& docs);
 
-/// Sets hint, hintDocs and hintMistake on every failed result whose image is
-/// closer to a gallery image of its case than to its reference. `jobs[i]` is
-/// the job that produced `results[i]`, and `gallery` was loaded from `jobs`
-/// (before grading). The reference distance is the one grading measured; the
-/// reference is read only when a result lacks it. Never throws. Works on
-/// `parallelJobs` cases at once.
+/// Sets hint, hintDocs, hintMistake, hintImage and hintDistance on every failed
+/// result that meets rules (a) and (b) above for a gallery mistake. `jobs[i]` is
+/// the job that produced `results[i]`; results of the same program are judged
+/// together (rule (b)), and `gallery` was loaded from `jobs` (before grading).
+/// The reference distance is the one grading measured; the reference is read
+/// only when a result lacks it. Never throws. Works on `parallelJobs` cases at once.
 void addHints(std::vector<GradeResult>& results, const std::vector<CaseJob>& jobs, const HintGallery& gallery,
               int parallelJobs = 1);
 

@@ -2,6 +2,7 @@
 
 #include "Base64.hpp"
 #include "Escape.hpp"
+#include "HeatMapLegend.hpp"
 #include "ReportFile.hpp"
 
 #include <algorithm>
@@ -34,6 +35,10 @@ section.case h2 { font-size: 1.1em; margin: 0.2em 0; }
 .no-reference { border-left-color: #ef6c00; } .no-reference .badge { background: #ef6c00; }
 .hint { background: #fff8e1; color: #3e2a00; border-radius: 4px; padding: 0.5em 0.8em; margin: 0.5em 0; }
 .hint a { color: #6d4c00; }
+.hint .images { margin-top: 0.4em; }
+.legend { width: 340px; max-width: 100%; height: 12px; border: 1px solid var(--line); }
+.legend-labels { display: flex; justify-content: space-between; width: 340px; max-width: 100%; }
+.over { color: #c62828; font-weight: 600; }
 .images { display: flex; flex-wrap: wrap; gap: 0.8em; }
 figure { margin: 0; }
 figure img { max-width: 340px; width: 100%; image-rendering: pixelated; border: 1px solid var(--line); }
@@ -73,25 +78,45 @@ std::string figure(const std::filesystem::path& image, const std::string& captio
            htmlEscape(caption) + "</figcaption></figure>\n";
 }
 
-std::string metricsTable(const CompareMetrics& comparison) {
-    std::string html = "<table class=\"metrics\">\n";
-    html += "<tr><th>pixels beyond the tolerance</th><td>" + number("%.3f%%", 100.0 * comparison.badFraction) +
-            "</td></tr>\n";
-    html += "<tr><th>mean difference (0-255)</th><td>" + number("%.2f", comparison.meanError) + "</td></tr>\n";
-    html += "<tr><th>largest difference (0-255)</th><td>" + std::to_string(comparison.maxError) + "</td></tr>\n";
+std::string metricsTable(const GradeResult& result) {
+    const CompareMetrics& comparison = *result.metrics;
+    auto cell = [](const std::string& value, bool over) {
+        return "<td" + std::string(over ? " class=\"over\"" : "") + ">" + value + "</td>";
+    };
+    std::string html = "<table class=\"metrics\">\n<tr><th></th><th>yours</th><th>passes at most</th></tr>\n";
+    html += "<tr><th>differing pixels (beyond the tolerance, after the one-pixel shift search)</th>" +
+            cell(percentText(comparison.badFraction), comparison.badFraction > result.maxBadFraction) + "<td>" +
+            percentText(result.maxBadFraction) + "</td></tr>\n";
     if (comparison.flipMean >= 0.0)
-        html += "<tr><th>FLIP mean (0-1)</th><td>" + number("%.4f", comparison.flipMean) + "</td></tr>\n";
+        html += "<tr><th>FLIP mean (0: no visible difference, 1: the largest)</th>" +
+                cell(flipText(comparison.flipMean), comparison.flipMean > result.maxFlipMean) + "<td>" +
+                flipText(result.maxFlipMean) + "</td></tr>\n";
+    html += "<tr><th>mean difference (0-255)</th><td>" + number("%.2f", comparison.meanError) + "</td><td></td></tr>\n";
+    html += "<tr><th>largest difference (0-255)</th><td>" + std::to_string(comparison.maxError) + "</td><td></td></tr>\n";
     html += "</table>\n";
     return html;
 }
 
 std::string hintBox(const GradeResult& result, const HtmlReportOptions& options) {
-    std::string html = "<div class=\"hint\"><strong>Hint:</strong> this image looks most like the known mistake <code>" +
-                       htmlEscape(result.hintMistake) + "</code>. " + htmlEscape(result.hint);
+    std::string html = "<div class=\"hint\"><strong>Hint (a suggestion, not a verdict):</strong> this picture looks "
+                       "like the known mistake <code>" + htmlEscape(result.hintMistake) + "</code>";
+    if (result.hintDistance >= 0.0 && result.metrics && result.metrics->flipMean >= 0.0)
+        html += " (FLIP mean " + flipText(result.hintDistance) + " from its picture, " +
+                flipText(result.metrics->flipMean) + " from the reference)";
+    html += ". " + htmlEscape(result.hint);
     if (!result.hintDocs.empty())
         html += " <a href=\"" + htmlEscape(options.docsBaseUrl + result.hintDocs) + "\">Read " +
                 htmlEscape(result.hintDocs) + "</a>";
+    std::string images = figure(result.renderedImage, "yours") +
+                         figure(result.hintImage, "the known mistake " + result.hintMistake);
+    if (!images.empty()) html += "<div class=\"images\">\n" + images + "</div>\n";
     return html + "</div>\n";
+}
+
+std::string legend() {
+    return "<figure><div class=\"legend\" style=\"background: " + heatMapLegendGradient() +
+           "\"></div><div class=\"legend-labels\"><span>0 (same)</span><span>0.5</span><span>1 (most "
+           "different)</span></div><figcaption>heat map colours: FLIP error per pixel</figcaption></figure>\n";
 }
 
 std::string outputTail(const std::string& output) {
@@ -107,14 +132,16 @@ std::string caseSection(const GradeResult& result, const HtmlReportOptions& opti
             " points, " + number("%.1f", result.seconds) + " s" +
             (result.visibility == Visibility::Hidden ? ", hidden case" : "") + "</span></h2>\n";
     if (!result.reason.empty()) html += "<p>" + htmlEscape(result.reason) + "</p>\n";
+    if (!result.difference.empty()) html += "<p>Where: " + htmlEscape(result.difference) + "</p>\n";
     if (result.hasHint()) html += hintBox(result, options);
-    if (result.metrics) html += metricsTable(*result.metrics);
+    if (result.metrics) html += metricsTable(result);
 
     bool showReference = result.visibility != Visibility::Hidden || options.showHiddenReferences;
     std::string images = figure(result.renderedImage, "yours");
     if (showReference) {
         images += figure(result.referenceImage, "reference");
-        images += figure(result.heatMapImage, "heat map (brighter: more different)");
+        std::string heatMap = figure(result.heatMapImage, "heat map (brighter: more different)");
+        if (!heatMap.empty()) images += heatMap + legend();
     }
     if (!images.empty()) html += "<div class=\"images\">\n" + images + "</div>\n";
     if (!showReference) html += "<p class=\"muted\">The reference of a hidden case is not shown.</p>\n";

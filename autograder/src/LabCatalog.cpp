@@ -73,8 +73,8 @@ std::filesystem::path labProgram(const std::filesystem::path& binDir, const std:
 }
 
 std::filesystem::path mistakeProgram(const std::filesystem::path& binDir, const std::string& lab,
-                                     const std::string& mistake) {
-    return binDir / "mistakes" / (lab + "." + mistake) / programName(lab);
+                                     const std::string& mistake, const std::string& folder) {
+    return binDir / folder / (lab + "." + mistake) / programName(lab);
 }
 
 std::filesystem::path referenceFolder(const std::filesystem::path& sourceDir, const std::string& lab) {

@@ -35,9 +35,10 @@ std::string programName(const std::string& lab);
 /// <binDir>/lab01_transforms
 std::filesystem::path labProgram(const std::filesystem::path& binDir, const std::string& lab);
 
-/// <binDir>/mistakes/01_transforms.MISTAKE/lab01_transforms
+/// <binDir>/<folder>/01_transforms.MISTAKE/lab01_transforms: "mistakes" for the
+/// planted ones, "out-of-gallery" for the test mistakes of stoa-grade --check-hints.
 std::filesystem::path mistakeProgram(const std::filesystem::path& binDir, const std::string& lab,
-                                     const std::string& mistake);
+                                     const std::string& mistake, const std::string& folder = "mistakes");
 
 /// <sourceDir>/autograder/references/<lab>: the public cases' references (and their render times).
 std::filesystem::path referenceFolder(const std::filesystem::path& sourceDir, const std::string& lab);

@@ -29,6 +29,43 @@ std::string padded(const std::string& text, std::size_t width) {
 
 } // namespace
 
+MistakeVerdict judgeOutOfGallery(const MistakeFile& mistake, const std::vector<GradeResult>& results) {
+    std::vector<std::string> problems, wrong, right;
+    for (const std::string& name : mistake.fails) {
+        auto result = std::find_if(results.begin(), results.end(),
+                                   [&](const GradeResult& entry) { return entry.caseName == name; });
+        if (result == results.end())
+            problems.push_back(name + " was not graded");
+        else if (result->status != GradeStatus::Failed)
+            problems.push_back(name + " " + (result->status == GradeStatus::Passed ? "passed"
+                                             : std::string("is ") + statusName(result->status) + ": " + result->reason));
+    }
+    for (const GradeResult& result : results) {
+        if (!result.hasHint()) continue;
+        // Right only where the entry's hint lists this cause: hint-ok says so, and the
+        // hint names the file the cause is in.
+        bool listed = std::find(mistake.hintOk.begin(), mistake.hintOk.end(), result.hintMistake) !=
+                      mistake.hintOk.end();
+        bool namesFile = result.hint.find(mistake.file) != std::string::npos;
+        if (listed && namesFile)
+            right.push_back(result.caseName + " -> " + result.hintMistake);
+        else
+            wrong.push_back(result.caseName + " -> " + result.hintMistake +
+                            (listed ? " (whose hint does not list " + mistake.file + ")" : ""));
+    }
+    MistakeVerdict verdict;
+    verdict.caught = problems.empty() && wrong.empty();
+    if (!wrong.empty()) verdict.detail = "WRONG HINT: " + joined(wrong);
+    else if (!right.empty()) verdict.detail = "hint lists its cause: " + joined(right);
+    else verdict.detail = "silent (no hint)";
+    if (!problems.empty()) {
+        std::string text;
+        for (std::size_t i = 0; i < problems.size(); ++i) text += (i ? "; " : "") + problems[i];
+        verdict.detail += "; NOT as its fails: line says: " + text;
+    }
+    return verdict;
+}
+
 MistakeVerdict judgeMistake(const MistakeFile& mistake, const std::vector<GradeResult>& results) {
     std::vector<std::string> problems;
     for (const std::string& name : mistake.fails) {
@@ -80,6 +117,13 @@ MistakeVerdict judgeMistake(const MistakeFile& mistake, const std::vector<GradeR
 int runCheckMistakes(const Options& options, const Environment& env) {
     std::vector<PlannedLab> labs = planLabs(options, env, false);
     std::filesystem::path solutionsDir = env.sourceDir / "solutions";
+    bool outOfGallery = !options.outOfGalleryDir.empty();
+    std::filesystem::path mistakesRoot = outOfGallery ? options.outOfGalleryDir : solutionsDir;
+    std::string programFolder = outOfGallery ? "out-of-gallery" : "mistakes";
+    if (outOfGallery && !std::filesystem::is_directory(mistakesRoot)) {
+        env.err << "stoa-grade: --check-hints " << mistakesRoot.string() << " is not a folder\n";
+        return 1;
+    }
     if (!std::filesystem::is_directory(solutionsDir)) {
         env.err << "stoa-grade: this tree has no solutions/ folder (a student release), so it has no planted "
                    "mistakes to check\n";
@@ -91,8 +135,8 @@ int runCheckMistakes(const Options& options, const Environment& env) {
     std::vector<CaseJob> jobs;
     std::vector<std::string> notBuilt;
     for (const PlannedLab& lab : labs) {
-        for (MistakeFile& mistake : loadMistakes(solutionsDir / lab.lab)) {
-            std::filesystem::path program = mistakeProgram(env.binDir, lab.lab, mistake.name);
+        for (MistakeFile& mistake : loadMistakes(mistakesRoot / lab.lab)) {
+            std::filesystem::path program = mistakeProgram(env.binDir, lab.lab, mistake.name, programFolder);
             if (!isExecutable(program)) {
                 notBuilt.push_back("note: mistake " + lab.lab + "." + mistake.name + " is not built (no program " +
                                    program.string() + "); skipping it");
@@ -106,7 +150,12 @@ int runCheckMistakes(const Options& options, const Environment& env) {
                                            name + "', which is not a case of " + lab.lab + " (cases: " +
                                            lab.manifest.caseNames() + ")";
             std::vector<CaseJob> labJobs =
-                caseJobs(lab, program, env.sourceDir, workDir / "mistakes" / (lab.lab + "." + run.mistake.name));
+                caseJobs(lab, program, env.sourceDir, workDir / programFolder / (lab.lab + "." + run.mistake.name));
+            // The gallery has no pictures of hidden cases, so they carry no hint: --check-hints skips them.
+            if (outOfGallery)
+                labJobs.erase(std::remove_if(labJobs.begin(), labJobs.end(),
+                                             [](const CaseJob& job) { return job.spec.visibility == Visibility::Hidden; }),
+                              labJobs.end());
             run.firstJob = jobs.size();
             run.jobCount = labJobs.size();
             jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
@@ -118,9 +167,10 @@ int runCheckMistakes(const Options& options, const Environment& env) {
             std::error_code ignored;
             std::filesystem::remove_all(workDir, ignored);
         }
-        env.err << "stoa-grade: no mistake program to check in " << (env.binDir / "mistakes").string();
+        env.err << "stoa-grade: no mistake program to check in " << (env.binDir / programFolder).string();
         if (notBuilt.empty())
-            env.err << ": no solutions/NN_name/mistakes/*.mistake file for the selected labs\n";
+            env.err << ": no " << (outOfGallery ? mistakesRoot.string() + "/" : std::string("solutions/"))
+                    << "NN_name/mistakes/*.mistake file for the selected labs\n";
         else
             env.err << ": none of the " << notBuilt.size() << " planted mistakes is built; they are built "
                     << "by a solutions build with tests (-DSTOA_USE_SOLUTIONS=ON -DSTOA_BUILD_TESTS=ON)\n";
@@ -151,14 +201,18 @@ int runCheckMistakes(const Options& options, const Environment& env) {
     bool keepImages = false;
     for (const MistakeRun& run : runs) {
         std::vector<GradeResult> own(results.begin() + run.firstJob, results.begin() + run.firstJob + run.jobCount);
-        MistakeVerdict verdict = judgeMistake(run.mistake, own);
+        MistakeVerdict verdict = outOfGallery ? judgeOutOfGallery(run.mistake, own) : judgeMistake(run.mistake, own);
         if (!run.manifestProblem.empty()) verdict = MistakeVerdict{false, "NOT checked: " + run.manifestProblem};
         if (verdict.caught) ++caught;
         else keepImages = true;
         env.out << padded(run.mistake.lab + "." + run.mistake.name, nameWidth) << "  "
                 << padded(joined(run.mistake.fails), failsWidth) << "  " << verdict.detail << "\n";
     }
-    env.out << "\n" << caught << " of " << runs.size() << " mistakes caught\n";
+    if (outOfGallery)
+        env.out << "\n" << caught << " of " << runs.size()
+                << " mistakes outside the gallery fail as their fails: line says and get no wrong hint\n";
+    else
+        env.out << "\n" << caught << " of " << runs.size() << " mistakes caught\n";
 
     if (keepImages || !options.workDir.empty()) {
         env.out << "rendered images and heat maps: " << workDir.string() << "\n";

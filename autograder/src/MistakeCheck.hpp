@@ -24,7 +24,13 @@ struct MistakeVerdict {
 /// Whether `results` (the mistake program's results for its lab) catch `mistake`.
 MistakeVerdict judgeMistake(const MistakeFile& mistake, const std::vector<GradeResult>& results);
 
-/// Returns the exit status: 0 when every built mistake is caught, 1 otherwise
+/// `stoa-grade --check-hints DIR`: whether the results of a mistake kept outside
+/// the gallery fail the cases its `fails:` line names, and name no gallery
+/// mistake but those its `hint-ok:` line lists (a hint is right or silent).
+MistakeVerdict judgeOutOfGallery(const MistakeFile& mistake, const std::vector<GradeResult>& results);
+
+/// With options.outOfGalleryDir, the mistakes outside the gallery instead
+/// (judgeOutOfGallery(), programs in <bin>/out-of-gallery/). Returns the exit status: 0 when every built mistake is caught, 1 otherwise
 /// (or when there is no mistake program to check).
 int runCheckMistakes(const Options& options, const Environment& env);
 

@@ -43,7 +43,7 @@ MistakeFile parseMistakeHeader(const std::string& text, const std::string& fileN
         std::size_t colon = content.find(':');
         if (colon == std::string::npos)
             throw InputError(fileName, lineNumber,
-                             "expected 'key: value' (keys: hint, docs, fails, file) before the '--- find' block, "
+                             "expected 'key: value' (keys: hint, docs, fails, file, hint-ok) before the '--- find' block, "
                              "got '" + content + "'");
         std::string key = trimmed(content.substr(0, colon));
         std::string value = trimmed(content.substr(colon + 1));
@@ -58,8 +58,11 @@ MistakeFile parseMistakeHeader(const std::string& text, const std::string& fileN
                 throw InputError(fileName, lineNumber, "'fails:' needs the names of the cases this mistake must fail");
         } else if (key == "file") {
             mistake.file = value;
+        } else if (key == "hint-ok") {
+            mistake.hintOk = words(value);
         } else {
-            throw InputError(fileName, lineNumber, "unknown key '" + key + "'; expected hint, docs, fails or file");
+            throw InputError(fileName, lineNumber,
+                             "unknown key '" + key + "'; expected hint, docs, fails, file or hint-ok");
         }
     }
     for (const char* required : {"hint", "fails", "file"})

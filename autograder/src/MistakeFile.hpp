@@ -6,6 +6,7 @@
 //   docs: labs/01_transforms.md#the-view-matrix
 //   fails: orbit_front orbit_side
 //   file: transforms.cpp
+//   hint-ok: view_transposed         (optional, out-of-gallery test mistakes only)
 //   --- find
 //   ...
 //
@@ -26,6 +27,10 @@ struct MistakeFile {
     std::vector<std::string> fails;   // required, not empty: the cases this mistake must fail
     std::string file;                 // required: the student file the mistake changes
     std::string path;                 // where it was read from, for messages
+    // A mistake kept outside the gallery (tests/data/out_of_gallery/, checked by
+    // stoa-grade --check-hints): the gallery entries whose hint lists this
+    // mistake's cause, so that naming them is right. Empty: any hint is wrong.
+    std::vector<std::string> hintOk;
 };
 
 /// Parses the header. `fileName` is used for the name, messages and `path`.

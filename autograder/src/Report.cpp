@@ -8,7 +8,7 @@ namespace stoa::grader {
 
 namespace {
 
-constexpr std::size_t kReasonColumnWidth = 64;
+constexpr std::size_t kLineWidth = 100;   // the report is wrapped to this many columns
 constexpr int kOutputLinesShown = 12;
 
 // The case column: a cascade run's cases are marked.
@@ -20,8 +20,10 @@ std::string padded(const std::string& text, std::size_t width) {
     return text.size() >= width ? text : text + std::string(width - text.size(), ' ');
 }
 
-std::string shortened(const std::string& text, std::size_t width) {
-    return text.size() <= width ? text : text.substr(0, width - 3) + "...";
+std::string format(const char* pattern, double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
 }
 
 // The last `count` lines of a program's output, each indented.
@@ -36,7 +38,70 @@ std::string lastLines(const std::string& output, int count) {
     return text;
 }
 
+// The share of differing pixels and the FLIP mean of a compared case ("" for one that was not).
+std::string pixelsCell(const GradeResult& result) {
+    return result.metrics ? percentText(result.metrics->badFraction) : "";
+}
+std::string flipCell(const GradeResult& result) {
+    if (!result.metrics || result.metrics->flipMean < 0.0) return "";
+    return flipText(result.metrics->flipMean);
+}
+
+bool sameThresholds(const std::vector<GradeResult>& results) {
+    for (const GradeResult& result : results)
+        if (result.maxBadFraction != results.front().maxBadFraction ||
+            result.maxFlipMean != results.front().maxFlipMean)
+            return false;
+    return true;
+}
+
+// The labs whose every counted case is not attempted: one line each.
+bool collapsed(const Totals& totals, const std::string& lab) {
+    for (const LabTotals& entry : totals.labs)
+        if (entry.lab == lab) return entry.nothingAttempted();
+    return false;
+}
+
+// Errors of one lab with the same reason and output are detailed once.
+struct ErrorGroup {
+    std::string lab;
+    std::string reason;
+    std::string output;
+    std::vector<std::string> cases;
+};
+
 } // namespace
+
+std::string percentText(double fraction) {
+    double percent = 100.0 * fraction;
+    if (percent == 0.0) return "0%";
+    if (percent >= 10.0) return format("%.1f%%", percent);
+    if (percent >= 0.1) return format("%.2f%%", percent);
+    return format("%.3f%%", percent);
+}
+
+std::string flipText(double flipMean) {
+    return flipMean == 0.0 ? "0" : format("%.3f", flipMean);
+}
+
+std::vector<std::string> wrapped(const std::string& text, std::size_t width, std::size_t indent,
+                                 std::size_t firstIndent) {
+    std::vector<std::string> lines;
+    std::istringstream stream(text);
+    std::string line = std::string(firstIndent, ' ');
+    bool empty = true;
+    for (std::string word; stream >> word;) {
+        if (!empty && line.size() + 1 + word.size() > width) {
+            lines.push_back(line);
+            line = std::string(indent, ' ');
+            empty = true;
+        }
+        line += (empty ? "" : " ") + word;
+        empty = false;
+    }
+    if (!empty) lines.push_back(line);
+    return lines;
+}
 
 int StatusCounts::total() const {
     int sum = 0;
@@ -100,40 +165,125 @@ std::string formatPoints(double points) {
 }
 
 void printReport(std::ostream& out, const std::vector<GradeResult>& results, const Totals& totals) {
-    std::size_t labWidth = 3, caseWidth = 4, statusWidth = 6, reasonWidth = 5;
+    std::size_t labWidth = 3, caseWidth = 4, statusWidth = 6, pointsWidth = 6, pixelsWidth = 16, flipWidth = 9;
+    bool uniform = !results.empty() && sameThresholds(results);
+    bool known = std::any_of(results.begin(), results.end(),
+                             [](const GradeResult& result) { return result.maxFlipMean > 0.0; });
+    auto pointsText = [](const GradeResult& result) {
+        return formatPoints(result.points) + " / " + formatPoints(result.maxPoints);
+    };
     for (const GradeResult& result : results) {
         labWidth = std::max(labWidth, result.lab.size());
-        caseWidth = std::max(caseWidth, caseLabel(result).size());
         statusWidth = std::max(statusWidth, std::string(statusName(result.status)).size());
-        reasonWidth = std::max(reasonWidth, std::min(result.reason.size(), kReasonColumnWidth));
+        if (result.counted && collapsed(totals, result.lab)) {   // its one line says "(N cases)" and the lab's points
+            caseWidth = std::max<std::size_t>(caseWidth, 10);
+            pointsWidth = std::max<std::size_t>(pointsWidth, 7);
+            continue;
+        }
+        caseWidth = std::max(caseWidth, caseLabel(result).size());
+        pointsWidth = std::max(pointsWidth, pointsText(result).size());
     }
+    std::string pixelsLimit = uniform && known ? "pass: <= " + percentText(results.front().maxBadFraction) : "";
+    std::string flipLimit = uniform && known ? "pass: <= " + flipText(results.front().maxFlipMean) : "";
+    pixelsWidth = std::max(pixelsWidth, pixelsLimit.size());
+    std::size_t indent = labWidth + 2;
+
     out << padded("lab", labWidth) << "  " << padded("case", caseWidth) << "  " << padded("status", statusWidth)
-        << "  " << padded("error", reasonWidth) << "  points\n";
-    out << std::string(labWidth + caseWidth + statusWidth + reasonWidth + 8 + 6, '-') << "\n";
+        << "  " << padded("points", pointsWidth) << "  " << padded("differing pixels", pixelsWidth) << "  "
+        << "FLIP mean\n";
+    if (uniform && known)
+        out << std::string(labWidth + caseWidth + statusWidth + pointsWidth + 8, ' ') << "  "
+            << padded(pixelsLimit, pixelsWidth) << "  " << flipLimit << "\n";
+    std::size_t columns = labWidth + caseWidth + statusWidth + pointsWidth + pixelsWidth + flipWidth + 10;
+    out << std::string(std::max<std::size_t>(columns, 40), '-') << "\n";
+
+    std::vector<std::string> collapsedShown;
     for (const GradeResult& result : results) {
-        out << padded(result.lab, labWidth) << "  " << padded(caseLabel(result), caseWidth) << "  "
-            << padded(statusName(result.status), statusWidth) << "  "
-            << padded(shortened(result.reason, kReasonColumnWidth), reasonWidth) << "  "
-            << formatPoints(result.points) << " / " << formatPoints(result.maxPoints)
-            << (result.counted ? "" : " (not counted)") << "\n";
-        if (result.hasHint()) out << hintLine(result, labWidth + 2) << "\n";
+        if (result.counted && collapsed(totals, result.lab)) {
+            if (std::find(collapsedShown.begin(), collapsedShown.end(), result.lab) != collapsedShown.end()) continue;
+            collapsedShown.push_back(result.lab);
+            auto lab = std::find_if(totals.labs.begin(), totals.labs.end(),
+                                    [&](const LabTotals& entry) { return entry.lab == result.lab; });
+            int count = lab->statuses.total();
+            out << padded(result.lab, labWidth) << "  "
+                << padded("(" + std::to_string(count) + (count == 1 ? " case)" : " cases)"), caseWidth) << "  "
+                << padded("not attempted", statusWidth) << "  "
+                << padded(formatPoints(lab->points) + " / " + formatPoints(lab->maxPoints), pointsWidth)
+                << "  start with docs/labs/" << result.lab << ".md\n";
+            continue;
+        }
+        std::string row = padded(result.lab, labWidth) + "  " + padded(caseLabel(result), caseWidth) + "  " +
+                          padded(statusName(result.status), statusWidth) + "  " +
+                          padded(pointsText(result), pointsWidth) + "  ";
+        if (result.metrics) {
+            std::string pixels = pixelsCell(result), flip = flipCell(result);
+            if (!uniform && known) {
+                pixels += " (<= " + percentText(result.maxBadFraction) + ")";
+                flip += " (<= " + flipText(result.maxFlipMean) + ")";
+            }
+            row += padded(pixels, pixelsWidth) + "  " + flip;
+        } else if (!result.reason.empty()) {
+            // The reason in full where it fits, else in the details.
+            bool fits = row.size() + result.reason.size() <= kLineWidth && result.reason.find('\n') == std::string::npos;
+            row += fits ? result.reason : std::string("(see the details below)");
+        }
+        while (!row.empty() && row.back() == ' ') row.pop_back();
+        out << row << (result.counted ? "" : "  (not counted)") << "\n";
+        if (result.hasHint())
+            for (const std::string& line : wrapped(hintLine(result), kLineWidth, indent + 6, indent)) out << line << "\n";
     }
 
+    // Details: only the cases that did not pass, and one entry per distinct error of a lab.
     bool headerPrinted = false;
-    for (const GradeResult& result : results) {
-        bool interesting = result.status == GradeStatus::Failed || result.status == GradeStatus::Error ||
-                           (result.status != GradeStatus::NoReference && result.reason.size() > kReasonColumnWidth);
-        if (!interesting) continue;
-        if (!headerPrinted) out << "\ndetails:\n";
+    auto header = [&]() {
+        if (!headerPrinted) out << "\ndetails (the cases that did not pass):\n";
         headerPrinted = true;
-        out << "  " << result.fullName() << ": " << statusName(result.status) << ": " << result.reason << "\n";
+    };
+    std::vector<ErrorGroup> errors;
+    for (const GradeResult& result : results) {
+        if (result.status == GradeStatus::Passed) continue;
+        if (result.counted && collapsed(totals, result.lab)) continue;
+        if (result.status == GradeStatus::Error) {
+            auto group = std::find_if(errors.begin(), errors.end(), [&](const ErrorGroup& entry) {
+                return entry.lab == result.lab && entry.reason == result.reason &&
+                       entry.output == lastLines(result.programOutput, kOutputLinesShown);
+            });
+            if (group == errors.end()) {
+                errors.push_back(ErrorGroup{result.lab, result.reason,
+                                            lastLines(result.programOutput, kOutputLinesShown), {}});
+                group = errors.end() - 1;
+            }
+            group->cases.push_back(caseLabel(result));
+            continue;
+        }
+        if (result.status == GradeStatus::NotAttempted || result.status == GradeStatus::NoReference) {
+            std::size_t rowWidth = labWidth + caseWidth + statusWidth + pointsWidth + 8;
+            if (rowWidth + result.reason.size() <= kLineWidth && result.reason.find('\n') == std::string::npos)
+                continue;   // the row said it in full
+        }
+        header();
+        for (const std::string& line :
+             wrapped(result.fullName() + ": " + statusName(result.status) + ": " + result.reason, kLineWidth, 6, 2))
+            out << line << "\n";
+        if (!result.difference.empty())
+            for (const std::string& line : wrapped("where: " + result.difference, kLineWidth, 11, 4))
+                out << line << "\n";
         if (!result.renderedImage.empty() && result.status == GradeStatus::Failed)
             out << "    yours:     " << result.renderedImage.string() << "\n";
         if (!result.heatMapImage.empty()) out << "    heat map:  " << result.heatMapImage.string() << "\n";
         if (!result.referenceImage.empty() && result.status == GradeStatus::Failed)
             out << "    reference: " << result.referenceImage.string() << "\n";
-        if (result.status == GradeStatus::Error && !result.programOutput.empty())
-            out << "    the program's last output:\n" << lastLines(result.programOutput, kOutputLinesShown);
+    }
+    for (const ErrorGroup& group : errors) {
+        header();
+        std::string cases;
+        for (const std::string& name : group.cases) cases += (cases.empty() ? "" : ", ") + name;
+        std::string who = group.cases.size() == 1 ? group.lab + "/" + cases
+                                                  : group.lab + " (" + std::to_string(group.cases.size()) +
+                                                        " cases: " + cases + ")";
+        for (const std::string& line : wrapped(who + ": error: " + group.reason, kLineWidth, 6, 2))
+            out << line << "\n";
+        if (!group.output.empty()) out << "    the program's last output:\n" << group.output;
     }
 
     int missingReferences = totals.statuses[GradeStatus::NoReference];
@@ -142,8 +292,8 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
             << " no reference image: run stoa-grade --update-references from a solutions build\n";
 
     out << "\n";
-    for (const LabTotals& lab : totals.labs)
-    {
+    for (const LabTotals& lab : totals.labs) {
+        if (lab.nothingAttempted() && !lab.hasCascade) continue;   // its one line above has the points
         out << padded(lab.lab, labWidth) << "  " << formatPoints(lab.points) << " / " << formatPoints(lab.maxPoints)
             << " points  (" << lab.statuses.describe() << ")\n";
         if (lab.hasCascade)
@@ -158,8 +308,11 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
 
 std::string hintLine(const GradeResult& result, std::size_t indent) {
     if (!result.hasHint()) return "";
-    std::string line = std::string(indent, ' ') + "hint: looks like the known mistake '" + result.hintMistake +
-                       "': " + result.hint;
+    std::string line = std::string(indent, ' ') + "hint: looks like the known mistake '" + result.hintMistake + "'";
+    if (result.hintDistance >= 0.0 && result.metrics && result.metrics->flipMean >= 0.0)
+        line += " (FLIP mean " + flipText(result.hintDistance) + " from its picture, " +
+                flipText(result.metrics->flipMean) + " from the reference)";
+    line += ": " + result.hint;
     if (!result.hintDocs.empty()) line += " (read " + result.hintDocs + ")";
     return line;
 }

@@ -54,15 +54,31 @@ bool allHaveStatus(const std::vector<GradeResult>& results, GradeStatus status);
 /// Points as a person writes them: "10", "2.5", "0.25".
 std::string formatPoints(double points);
 
-/// The table (lab, case, status, error, points; a hint line under a case that
-/// looks like a known mistake), the details of every case that
-/// did not pass (full reason, image paths, the end of the program's output),
-/// the totals per lab and overall, and the final line "score: X / Y".
+/// The table (lab, case, status, points, the share of differing pixels and the
+/// FLIP mean with their pass thresholds, or the reason where nothing was
+/// compared; a wrapped hint under a case that looks like a known mistake; one
+/// line for a lab where nothing was attempted), the details of the cases that did
+/// not pass (full reason, where the picture differs, image paths; an error that
+/// several cases of a lab share, with the end of the program's output, once),
+/// the totals per lab and overall, and the final line "score: X / Y". Lines are
+/// wrapped at word boundaries to 100 columns (a long path stays whole).
 void printReport(std::ostream& out, const std::vector<GradeResult>& results, const Totals& totals);
 
+/// "23.4%", "0.20%", "0.005%", "0%": a share of pixels as the report prints it.
+std::string percentText(double fraction);
+/// "0.213", "0": a FLIP mean as the report prints it.
+std::string flipText(double flipMean);
+
+/// `text` cut at spaces into lines of at most `width` columns (a longer word
+/// stays whole); the first line starts with `firstIndent` spaces, the others
+/// with `indent`.
+std::vector<std::string> wrapped(const std::string& text, std::size_t width, std::size_t indent,
+                                 std::size_t firstIndent);
+
 /// The line printed under a case that carries a known-mistake hint:
-/// "<indent>hint: looks like the known mistake 'no_half_vector': The specular
-/// term ... (read docs/labs/02_shading.md#the-half-vector)"; "" without a hint.
+/// "<indent>hint: looks like the known mistake 'no_half_vector' (FLIP mean 0.004
+/// from its picture, 0.087 from the reference): The specular term ... (read
+/// docs/labs/02_shading.md#the-half-vector)"; "" without a hint. Unwrapped.
 std::string hintLine(const GradeResult& result, std::size_t indent = 0);
 
 /// One line per lab where nothing was attempted yet, pointing at its docs page:

@@ -34,8 +34,10 @@ std::string testOutput(const GradeResult& result) {
     if (!result.counted)
         text += "Not counted: the lab's other run (" + std::string(result.cascade ? "with your own earlier labs" :
                 "with the earlier labs' solutions") + ") has more points.\n";
+    if (!result.difference.empty()) text += "Where: " + result.difference + "\n";
     if (result.hasHint()) {
-        text += "\nHint: this image looks most like the known mistake '" + result.hintMistake + "': " + result.hint + "\n";
+        text += "\nHint (a suggestion, not a verdict): this image looks like the known mistake '" + result.hintMistake +
+                "': " + result.hint + "\n";
         if (!result.hintDocs.empty()) text += "Read " + result.hintDocs + "\n";
     }
     if ((result.status == GradeStatus::Error || result.status == GradeStatus::NotAttempted) &&

@@ -5,6 +5,7 @@
 #include "CommandLine.hpp"
 #include "DeterminismCheck.hpp"
 #include "GradeCommand.hpp"
+#include "HeatMapLegend.hpp"
 #include "LabCatalog.hpp"
 #include "LabPlan.hpp"
 #include "MistakeCheck.hpp"
@@ -24,6 +25,11 @@ int main(int argc, char** argv) {
             std::cout << usageText();
             return 0;
         }
+        if (options.mode == Mode::HeatMapLegend) {
+            writeHeatMapLegend(options.heatMapLegend);
+            std::cout << "wrote " << options.heatMapLegend.string() << "\n";
+            return 0;
+        }
         killChildrenOnInterrupt();
         std::filesystem::path binDir = options.binDir.empty() ? executableDir() : options.binDir;
         if (binDir.empty()) {
@@ -40,6 +46,7 @@ int main(int argc, char** argv) {
         case Mode::UpdateReferences: return runUpdateReferences(options, env);
         case Mode::CheckMistakes: return runCheckMistakes(options, env);
         case Mode::Determinism: return runDeterminismCheck(options, env);
+        case Mode::HeatMapLegend:
         case Mode::Help: break;
         }
         return 0;

@@ -9,6 +9,8 @@
 #                                                                         -> build/bin/mistakes/NN_name.MISTAKE/
 #   equivalent a solution rewritten another valid way (solutions/NN/equivalents/*.equivalent)
 #                                                                         -> build/bin/equivalents/NN_name.NAME/
+#   out of     a mistake kept outside the gallery, test data of stoa-grade --check-hints
+#   gallery    (tests/data/out_of_gallery/NN/mistakes/*.mistake)          -> build/bin/out-of-gallery/NN_name.NAME/
 #
 #   stoa_add_lab(NAME 01_transforms
 #                STUDENT_FILES transforms.cpp camera_controls.cpp   # C++ and GLSL, twins in solutions/
@@ -51,6 +53,7 @@ set(STOA_E2E_LAB "" CACHE STRING "Build the extra tracks (stubs, one mistake, on
 set_property(GLOBAL PROPERTY STOA_LABS "")
 set_property(GLOBAL PROPERTY STOA_MISTAKES "")
 set_property(GLOBAL PROPERTY STOA_EQUIVALENTS "")
+set_property(GLOBAL PROPERTY STOA_OUT_OF_GALLERY "")
 
 # The files of a lab's folder in labs/ that are not student files (a header such
 # as normals.hpp) are reachable from every track's student files, wherever the
@@ -204,6 +207,16 @@ function(stoa_add_lab)
   foreach(equivalent_file IN LISTS equivalents)
     _stoa_variant_program(${lab} ${equivalent_file} equivalent equivalents "${ARG_USES}")
   endforeach()
+  # Mistakes kept outside the gallery, so that they never become hints: the test
+  # that hints are right or silent (e2e.hints_right_or_silent). Each compiles its
+  # one patched file and links the solutions' objects, like a planted mistake.
+  # Not in the narrowed (STOA_E2E_LAB) build.
+  if(NOT STOA_E2E_LAB)
+    file(GLOB out_of_gallery ${STOA_ROOT_DIR}/tests/data/out_of_gallery/${lab}/mistakes/*.mistake)
+    foreach(mistake_file IN LISTS out_of_gallery)
+      _stoa_variant_program(${lab} ${mistake_file} probe out-of-gallery "${ARG_USES}")
+    endforeach()
+  endif()
 endfunction()
 
 # A variant of a lab's solution: a .mistake or .equivalent file (same format; an
@@ -238,6 +251,7 @@ function(_stoa_variant_program lab variant_file kind folder uses)
   _stoa_lab_program(${lab} ${lab}-${kind}-${name} ${CMAKE_BINARY_DIR}/bin/${folder}/${id} ${kind}:${name}
                     "${overlay};${STOA_SOLUTIONS_DIR};${STOA_ROOT_DIR}/shaders" "${objects}")
   string(TOUPPER ${folder} property)
+  string(MAKE_C_IDENTIFIER ${property} property)
   set_property(GLOBAL APPEND PROPERTY STOA_${property} ${id})
 endfunction()
 

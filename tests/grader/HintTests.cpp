@@ -67,6 +67,76 @@ TEST_CASE("closestMistake picks the gallery image nearest the student's", "[grad
     CHECK_FALSE(closestMistake(squareAt(40, 24), reference, gallery, {}, perfect).has_value());
 }
 
+TEST_CASE("clearlyCloser: a third of the distance to the reference, or closer", "[grader][hint]") {
+    CHECK(clearlyCloser(metrics(0.03, 0.5, 9), metrics(0.1, 0.5, 9)));
+    CHECK_FALSE(clearlyCloser(metrics(0.05, 0.1, 9), metrics(0.1, 0.5, 9)));   // closer, not by the margin
+    CHECK(clearlyCloser(metrics(0.0, 0.0, 0), metrics(0.2, 0.3, 9)));          // the very picture
+    CHECK_FALSE(clearlyCloser(metrics(0.0, 0.0, 0), metrics(0.0, 0.0, 0)));    // nothing to be closer than
+    CHECK(clearlyCloser(metrics(-1, 0.01, 9), metrics(-1, 0.3, 9)));           // without FLIP: bad pixels
+}
+
+TEST_CASE("patternAgrees: a case the mistake fails that passed rules it out", "[grader][hint]") {
+    std::vector<std::string> fails = {"wide_lens", "first_person_walk"};
+    using S = GradeStatus;
+    CHECK(patternAgrees(fails, {{"wide_lens", S::Failed}, {"first_person_walk", S::Failed}, {"orbit_front", S::Passed}}));
+    // walkRight's sign flipped fails first_person_walk only: aspect_inverted would fail wide_lens too.
+    CHECK_FALSE(patternAgrees(fails, {{"wide_lens", S::Passed}, {"first_person_walk", S::Failed}}));
+    // A failure the mistake does not explain (a second mistake, a hidden case) does not rule it out.
+    CHECK(patternAgrees(fails, {{"wide_lens", S::Failed}, {"first_person_walk", S::Failed}, {"hidden", S::Failed}}));
+    // Not attempted, errors and cases not graded say nothing.
+    CHECK(patternAgrees(fails, {{"wide_lens", S::NotAttempted}, {"first_person_walk", S::Error}}));
+}
+
+TEST_CASE("addHints: a passed case the mistake fails, or one case not clearly closer, silences it",
+          "[grader][hint]") {
+    stoa::test::TempFolder folder("pattern");
+    std::filesystem::path refs = folder / "references/01_transforms";
+    std::filesystem::create_directories(refs / "mistakes/square_right");
+    squareAt(8, 24).savePng(refs / "front.png");
+    squareAt(8, 24).savePng(refs / "side.png");
+    squareAt(40, 24).savePng(refs / "mistakes/square_right/front.png");
+    squareAt(40, 44).savePng(refs / "mistakes/square_right/side.png");
+    folder.write("references/01_transforms/mistakes/square_right/mistake.txt",
+                 "hint: The square is on the wrong side.\nfails: front side\nfile: transforms.cpp\n");
+    auto graded = [&](const std::string& caseName, GradeStatus status, const Image& rendered) {
+        std::filesystem::path path = folder / (caseName + std::to_string(static_cast<int>(status)) + ".png");
+        rendered.savePng(path);
+        GradeResult result;
+        result.lab = "01_transforms";
+        result.caseName = caseName;
+        result.status = status;
+        result.renderedImage = path;
+        return result;
+    };
+    CaseJob front;
+    front.lab = "01_transforms";
+    front.program = "student";
+    front.spec.name = "front";
+    front.reference = refs / "front.png";
+    CaseJob side = front;
+    side.spec.name = "side";
+    side.reference = refs / "side.png";
+    std::vector<CaseJob> jobs = {front, side};
+
+    // Both cases look like the mistake: hints on both.
+    std::vector<GradeResult> both = {graded("front", GradeStatus::Failed, squareAt(40, 24)),
+                                     graded("side", GradeStatus::Failed, squareAt(40, 44))};
+    addHints(both, jobs);
+    CHECK(both[0].hintMistake == "square_right");
+    CHECK(both[1].hintMistake == "square_right");
+    // The same front picture, but side passed: the mistake would have failed it.
+    std::vector<GradeResult> sidePassed = {graded("front", GradeStatus::Failed, squareAt(40, 24)),
+                                           graded("side", GradeStatus::Passed, squareAt(8, 24))};
+    addHints(sidePassed, jobs);
+    CHECK_FALSE(sidePassed[0].hasHint());
+    // Side failed but looks nothing like the mistake's side: silent on front too.
+    std::vector<GradeResult> sideElse = {graded("front", GradeStatus::Failed, squareAt(40, 24)),
+                                         graded("side", GradeStatus::Failed, squareAt(8, 4))};
+    addHints(sideElse, jobs);
+    CHECK_FALSE(sideElse[0].hasHint());
+    CHECK_FALSE(sideElse[1].hasHint());
+}
+
 TEST_CASE("docsPath puts docs/ before a .mistake file's docs: value", "[grader][hint]") {
     CHECK(docsPath("labs/01_transforms.md#the-view-matrix") == "docs/labs/01_transforms.md#the-view-matrix");
     CHECK(docsPath("docs/labs/02_shading.md") == "docs/labs/02_shading.md");
@@ -130,7 +200,9 @@ TEST_CASE("addHints names the mistake a failed case looks like", "[grader][hint]
                                         failedCase("dim", squareAt(8, 24, 120)),
                                         failedCase("passed", squareAt(40, 24))};
     results[3].status = GradeStatus::Passed;
+    // Each result from its own program: rule (b) judges a program's cases together.
     std::vector<CaseJob> jobs = {job, job, job, job};
+    for (std::size_t i = 0; i < jobs.size(); ++i) jobs[i].program = "program" + std::to_string(i);
     HintGallery gallery = HintGallery::load(jobs);
     CHECK(gallery.imageCount() == 8);
     CHECK(gallery.imagesFor(99).empty());
@@ -141,6 +213,9 @@ TEST_CASE("addHints names the mistake a failed case looks like", "[grader][hint]
     CHECK(results[0].hintMistake == "square_right");
     CHECK(results[0].hint == "The square is on the wrong side.");
     CHECK(results[0].hintDocs == "docs/labs/01_transforms.md#the-model-matrix");
+    CHECK(results[0].hintImage == refs / "mistakes/square_right/front.png");
+    CHECK(results[0].hintDistance >= 0.0);
+    CHECK(results[0].hintDistance < 0.05);
     CHECK(results[1].hintMistake == "square_low");
     CHECK(results[1].hintDocs.empty());
     CHECK_FALSE(results[2].hasHint());

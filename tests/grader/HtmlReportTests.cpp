@@ -55,6 +55,11 @@ TEST_CASE("htmlReport: totals first, failures first, images embedded, hint linke
     results[1].hint = "Use H = normalize(L + V) <not R>.";
     results[1].hintDocs = "docs/labs/02_shading.md#the-half-vector";
     results[1].hintMistake = "no_half_vector";
+    results[1].hintImage = folder.write("gallery.png", "GALLERY");
+    results[1].hintDistance = 0.004;
+    results[1].maxBadFraction = 0.002;
+    results[1].maxFlipMean = 0.05;
+    results[1].difference = "differs in 3.2% of the pixels, most of them in the top left (80% of them)";
     results[2].visibility = stoa::Visibility::Hidden;
     results[2].renderedImage = results[1].renderedImage;
     results[2].referenceImage = results[1].referenceImage;
@@ -84,8 +89,13 @@ TEST_CASE("htmlReport: totals first, failures first, images embedded, hint linke
     CHECK(find(html, "<link") == std::string::npos);
     CHECK(find(html, "<script") == std::string::npos);
     // The metrics, and the hint with its link.
-    CHECK(find(html, "3.200%") != std::string::npos);
-    CHECK(find(html, "0.0421") != std::string::npos);
+    CHECK(find(html, "<td class=\"over\">3.20%</td><td>0.20%</td>") != std::string::npos);
+    CHECK(find(html, "<td>0.042</td><td>0.050</td>") != std::string::npos);
+    CHECK(find(html, "Where: differs in 3.2% of the pixels, most of them in the top left") != std::string::npos);
+    // The gallery picture beside the hint, with how close the match is; the heat map's legend.
+    CHECK(find(html, "src=\"data:image/png;base64,R0FMTEVSWQ==\"") != std::string::npos);
+    CHECK(find(html, "FLIP mean 0.004 from its picture, 0.042 from the reference") != std::string::npos);
+    CHECK(find(html, "class=\"legend\" style=\"background: linear-gradient(") != std::string::npos);
     CHECK(find(html, "<code>no_half_vector</code>") != std::string::npos);
     CHECK(find(html, "Use H = normalize(L + V) &lt;not R&gt;.") != std::string::npos);
     CHECK(find(html, "href=\"file:///home/ada/stoa/docs/labs/02_shading.md#the-half-vector\"") != std::string::npos);

@@ -97,14 +97,70 @@ TEST_CASE("printReport puts a known-mistake hint under the failed case's row", "
     printReport(out, results, summarize(results));
     std::string text = out.str();
     std::string line = "               hint: looks like the known mistake 'view_transposed': The view matrix is "
-                       "transposed. (read docs/labs/01_transforms.md#the-view-matrix)\n";
+                       "transposed.\n";
     std::size_t row = text.find("orbit_side");
     REQUIRE(row != std::string::npos);
-    CHECK(text.find(line) == text.find('\n', row) + 1);   // the line right after the row
+    CHECK(text.find(line) == text.find('\n', row) + 1);   // the line right after the row, wrapped
     CHECK(hintLine(results[0]).empty());
     results[1].hintDocs.clear();
     CHECK(hintLine(results[1], 2) == "  hint: looks like the known mistake 'view_transposed': The view matrix is "
                                      "transposed.");
+    results[1].metrics = CompareMetrics{0.04, 9.3, 255, 0.21};
+    results[1].hintDistance = 0.003;
+    CHECK(hintLine(results[1]) == "hint: looks like the known mistake 'view_transposed' (FLIP mean 0.003 from its "
+                                  "picture, 0.210 from the reference): The view matrix is transposed.");
+}
+
+TEST_CASE("printReport: metric columns with thresholds, no cut words, details of what did not pass",
+          "[grader][report]") {
+    std::vector<GradeResult> results = sample();
+    for (GradeResult& r : results) {
+        r.maxBadFraction = 0.002;
+        r.maxFlipMean = 0.05;
+    }
+    results[0].metrics = CompareMetrics{0.0, 0.01, 2, 0.0};
+    results[1].metrics = CompareMetrics{0.042, 9.3, 255, 0.2134};
+    results[1].difference = "differs in 4.2% of the pixels, most of them in the top left (90% of them)";
+    results[0].reason = std::string(120, 'x');   // a passed case's long reason is not detailed
+    results[2].reason = "crashed with SIGSEGV (segmentation fault) while the program was drawing the third of its "
+                        "many frames";
+    std::ostringstream out;
+    printReport(out, results, summarize(results));
+    std::string text = out.str();
+    CHECK(text.find("differing pixels") != std::string::npos);
+    CHECK(text.find("pass: <= 0.20%") != std::string::npos);
+    CHECK(text.find("pass: <= 0.050") != std::string::npos);
+    CHECK(text.find("4.20%") != std::string::npos);
+    CHECK(text.find("0.213") != std::string::npos);
+    CHECK(text.find("xxxxxxxx") == std::string::npos);
+    CHECK(text.find("where: differs in 4.2% of the pixels") != std::string::npos);
+    CHECK(text.find("(see the details below)") != std::string::npos);
+    CHECK(text.find("  01_transforms/fly: error: crashed with SIGSEGV") != std::string::npos);
+    CHECK(text.find("01_transforms/orbit_front") == std::string::npos);   // passed: no details
+    CHECK(text.find("...") == std::string::npos);                         // nothing cut
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) CHECK(line.size() <= 100);
+}
+
+TEST_CASE("printReport: one line per lab where nothing was attempted, one error per lab", "[grader][report]") {
+    std::vector<GradeResult> results = sample();
+    for (int i = 0; i < 3; ++i) {
+        GradeResult r = result("03_meshes", "case" + std::to_string(i), GradeStatus::Error, 0, 2,
+                               "shader compile error: textures.glsl:7: syntax error");
+        r.programOutput = "0:7(10): error: syntax error, unexpected '}'\n";
+        results.push_back(r);
+    }
+    std::ostringstream out;
+    printReport(out, results, summarize(results));
+    std::string text = out.str();
+    CHECK(text.find("02_shading  ") != std::string::npos);
+    CHECK(text.find("blinn") == std::string::npos);   // collapsed into the lab's line
+    CHECK(text.find("(2 cases)") != std::string::npos);
+    CHECK(text.find("start with docs/labs/02_shading.md") != std::string::npos);
+    std::size_t first = text.find("syntax error, unexpected");
+    REQUIRE(first != std::string::npos);
+    CHECK(text.find("syntax error, unexpected", first + 1) == std::string::npos);   // printed once
+    CHECK(text.find("03_meshes (3 cases: case0, case1, case2): error: shader compile error") != std::string::npos);
 }
 
 TEST_CASE("hints point at the docs of labs where nothing was attempted", "[grader][report]") {
