@@ -222,6 +222,10 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
                 flip += " (<= " + flipText(result.maxFlipMean) + ")";
             }
             row += padded(pixels, pixelsWidth) + "  " + flip;
+        } else if (result.propertyCheck && (result.status == GradeStatus::Passed || result.status == GradeStatus::Failed)) {
+            // A property check has no picture: its verdict; what it measured is in the details when it fails.
+            row += result.status == GradeStatus::Passed ? "property check: holds"
+                                                        : "property check: does not hold (see the details below)";
         } else if (!result.reason.empty()) {
             // The reason in full where it fits, else in the details.
             bool fits = row.size() + result.reason.size() <= kLineWidth && result.reason.find('\n') == std::string::npos;
