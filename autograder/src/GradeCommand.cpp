@@ -130,6 +130,7 @@ int runGrade(const Options& options, const Environment& env) {
     if (!options.htmlFile.empty()) {
         HtmlReportOptions html;
         html.docsBaseUrl = "file://" + std::filesystem::absolute(env.sourceDir).string() + "/";
+        html.siteDir = findDocsSite(env.sourceDir, env.binDir);
         writeHtmlReport(options.htmlFile, results, totals, html);
         env.out << "wrote " << options.htmlFile.string() << "\n";
     }

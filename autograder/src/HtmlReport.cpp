@@ -105,7 +105,7 @@ std::string hintBox(const GradeResult& result, const HtmlReportOptions& options)
                 flipText(result.metrics->flipMean) + " from the reference)";
     html += ". " + htmlEscape(result.hint);
     if (!result.hintDocs.empty())
-        html += " <a href=\"" + htmlEscape(options.docsBaseUrl + result.hintDocs) + "\">Read " +
+        html += " <a href=\"" + htmlEscape(docsLink(result.hintDocs, options)) + "\">Read " +
                 htmlEscape(result.hintDocs) + "</a>";
     std::string images = figure(result.renderedImage, "yours") +
                          figure(result.hintImage, "the known mistake " + result.hintMistake);
@@ -167,6 +167,33 @@ std::string totalsSection(const Totals& totals) {
 }
 
 } // namespace
+
+std::string docsLink(const std::string& docsPath, const HtmlReportOptions& options) {
+    // "docs/labs/02_shading.md#anchor" -> the page "labs/02_shading" and "#anchor".
+    const std::size_t hash = docsPath.find('#');
+    const std::string file = docsPath.substr(0, hash);
+    const std::string anchor = hash == std::string::npos ? "" : docsPath.substr(hash);
+    const std::string prefix = "docs/", suffix = ".md";
+    if (!options.siteDir.empty() && file.rfind(prefix, 0) == 0 && file.size() > prefix.size() + suffix.size() &&
+        file.compare(file.size() - suffix.size(), suffix.size(), suffix) == 0) {
+        std::string page = file.substr(prefix.size(), file.size() - prefix.size() - suffix.size());
+        // MkDocs writes page.md as page/index.html, and index.md as index.html.
+        std::filesystem::path html = page == "index" ? options.siteDir / "index.html"
+                                                     : options.siteDir / page / "index.html";
+        std::error_code error;
+        if (std::filesystem::is_regular_file(html, error))
+            return "file://" + std::filesystem::absolute(html).lexically_normal().generic_string() + anchor;
+    }
+    return options.docsBaseUrl + docsPath;
+}
+
+std::filesystem::path findDocsSite(const std::filesystem::path& sourceDir, const std::filesystem::path& binDir) {
+    for (const std::filesystem::path& site : {sourceDir / "site", binDir.parent_path() / "site"}) {
+        std::error_code error;
+        if (!site.empty() && std::filesystem::is_regular_file(site / "index.html", error)) return site;
+    }
+    return {};
+}
 
 std::vector<std::size_t> failuresFirst(const std::vector<GradeResult>& results) {
     std::vector<std::size_t> order(results.size());

@@ -22,11 +22,23 @@ struct HtmlReportOptions {
     /// Put before a hint's docs path ("docs/labs/...md#anchor") to make its link,
     /// e.g. "file:///home/me/stoa/". Empty: the link is the docs path itself.
     std::string docsBaseUrl;
+    /// The built docs site (`mkdocs build`'s output, e.g. <source>/site): a hint then links to
+    /// its page (site/labs/02_shading/index.html#anchor), which a browser shows with the
+    /// equations typeset; without one, or when it lacks the page, to the Markdown.
+    std::filesystem::path siteDir;
     /// Hidden cases show the student's image only: their reference and heat map
     /// would reveal a case students are not meant to see. True shows them (for
     /// a report only instructors read).
     bool showHiddenReferences = false;
 };
+
+/// The link for a hint's docs path ("docs/labs/02_shading.md#the-half-vector"): the page of
+/// the built site when `options.siteDir` has it (a file:// URL), else docsBaseUrl + the path.
+std::string docsLink(const std::string& docsPath, const HtmlReportOptions& options);
+
+/// The built docs site to link to: <sourceDir>/site or <binDir>/../site (the docs test's),
+/// the first that has an index.html; empty when neither has.
+std::filesystem::path findDocsSite(const std::filesystem::path& sourceDir, const std::filesystem::path& binDir);
 
 /// The order the page lists the results in: failed, error, no reference, not
 /// attempted, passed; the grader's order within each.

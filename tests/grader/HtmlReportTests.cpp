@@ -127,3 +127,33 @@ TEST_CASE("writeHtmlReport writes the page and names a path it cannot write", "[
     CHECK_THROWS_WITH(writeHtmlReport(folder / "plain-file/report.html", results, summarize(results)),
                       Catch::Contains("plain-file/report.html"));
 }
+
+TEST_CASE("docsLink: the built site's page when it has one, else the Markdown", "[grader][report][html]") {
+    stoa::test::TempFolder folder;
+    HtmlReportOptions options;
+    options.docsBaseUrl = "file:///home/me/stoa/";
+    const std::string hint = "docs/labs/02_shading.md#the-half-vector";
+    // No site: the Markdown.
+    CHECK(docsLink(hint, options) == "file:///home/me/stoa/docs/labs/02_shading.md#the-half-vector");
+    CHECK(findDocsSite(folder.path(), folder.path() / "build" / "bin").empty());
+
+    // A site without that page: still the Markdown.
+    folder.write("site/index.html", "<html></html>");
+    options.siteDir = findDocsSite(folder.path(), folder.path() / "build" / "bin");
+    REQUIRE(options.siteDir == folder.path() / "site");
+    CHECK(docsLink(hint, options) == "file:///home/me/stoa/docs/labs/02_shading.md#the-half-vector");
+
+    // With the page: MkDocs's labs/02_shading/index.html, the anchor kept.
+    folder.write("site/labs/02_shading/index.html", "<html></html>");
+    const std::string page = std::filesystem::absolute(folder.path() / "site" / "labs" / "02_shading" / "index.html")
+                                 .lexically_normal()
+                                 .generic_string();
+    CHECK(docsLink(hint, options) == "file://" + page + "#the-half-vector");
+    CHECK(docsLink("docs/index.md", options) ==
+          "file://" + std::filesystem::absolute(folder.path() / "site" / "index.html").lexically_normal().generic_string());
+
+    // The docs test's site beside the build's bin folder is found too.
+    stoa::test::TempFolder other;
+    other.write("build/site/index.html", "<html></html>");
+    CHECK(findDocsSite(other.path(), other.path() / "build" / "bin") == other.path() / "build" / "site");
+}
