@@ -452,8 +452,14 @@ void triangulate(const std::vector<Corner>& face, const std::vector<glm::vec3>& 
         // (y, z), (z, x), (x, y): counter-clockwise seen along the normal when sign > 0.
         points[i] = glm::dvec2(p[(drop + 1) % 3], sign * p[(drop + 2) % 3]);
     }
-    // Convex: every corner turns the same way (within rounding), and the
-    // edges sweep around once (their x and y each change sign at most twice).
+    // Convex: every corner turns the same way, and the edges sweep around
+    // once (their x and y each change sign at most twice). Both within the
+    // rounding of float positions written as text: a circle of 100,000
+    // corners is convex, though its neighbouring corners differ in the
+    // seventh digit only.
+    double scale = 0.0;
+    for (const glm::dvec2& p : points) scale = std::max({scale, std::abs(p.x), std::abs(p.y)});
+    const double noise = scale * 1e-6;
     bool convex = true;
     int xChanges = 0, yChanges = 0;
     double lastX = 0.0, lastY = 0.0;
@@ -461,12 +467,12 @@ void triangulate(const std::vector<Corner>& face, const std::vector<glm::vec3>& 
         const glm::dvec2 a = points[i % n], b = points[(i + 1) % n], c = points[(i + 2) % n];
         const glm::dvec2 e1 = b - a, e2 = c - b;
         const double turn = e1.x * e2.y - e1.y * e2.x;
-        if (turn < -1e-6 * glm::length(e1) * glm::length(e2)) convex = false;
-        if (e1.x != 0.0) {
+        if (turn < -noise * (glm::length(e1) + glm::length(e2))) convex = false;
+        if (std::abs(e1.x) > noise) {
             if (lastX != 0.0 && (e1.x > 0.0) != (lastX > 0.0)) ++xChanges;
             lastX = e1.x;
         }
-        if (e1.y != 0.0) {
+        if (std::abs(e1.y) > noise) {
             if (lastY != 0.0 && (e1.y > 0.0) != (lastY > 0.0)) ++yChanges;
             lastY = e1.y;
         }

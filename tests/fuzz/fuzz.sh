@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Fuzzes each loader for a given time, one after the other, one process each.
+#   tests/fuzz/fuzz.sh [MINUTES_PER_LOADER] [obj|image|heightmap ...]
+# Default: 10 minutes each for obj, image and heightmap. Builds the fuzzers
+# (build-fuzzers.sh) and the corpora (make-regression-corpus.py) in
+# $FUZZ_OUT (default build-fuzz), keeps each loader's growing corpus in
+# $FUZZ_OUT/work/LOADER and its log in $FUZZ_OUT/LOADER.log, and writes any
+# crashing, leaking, slow (> 1 s) or memory-hungry input to
+# $FUZZ_OUT/findings/LOADER/. A finding is fixed, then added to the
+# regression corpus (make-regression-corpus.py, or tests/fuzz/findings/).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+minutes=${1:-10}
+shift || true
+targets=("$@")
+(( ${#targets[@]} )) || targets=(obj image heightmap)
+out=${FUZZ_OUT:-$root/build-fuzz}
+rss_mb=${FUZZ_RSS_MB:-2048}
+
+"$root/tests/fuzz/build-fuzzers.sh" "$out"
+python3 "$root/tests/fuzz/make-regression-corpus.py" "$out/corpus"
+status=0
+for target in "${targets[@]}"; do
+  kind=$target
+  [[ $target == heightmap ]] && kind=image
+  mkdir -p "$out/work/$target" "$out/findings/$target"
+  # Seeds and the small regression files start the corpus (the 100,000-corner
+  # OBJ files are for the replay: each run of one takes a while).
+  cp -n "$out/corpus/seeds/$kind"/* "$out/work/$target/"
+  find "$out/corpus/regression/$kind" -type f -size -64k -exec cp -n {} "$out/work/$target/" \;
+  if [[ -d "$root/tests/fuzz/findings/$kind" ]]; then cp -n "$root/tests/fuzz/findings/$kind"/* "$out/work/$target/" || true; fi
+  echo "== fuzzing $target for $minutes min (log: $out/$target.log)"
+  nice -n 19 "$out/fuzz-$target" "$out/work/$target" -max_total_time=$((minutes * 60)) -timeout=1 \
+       -rss_limit_mb="$rss_mb" -malloc_limit_mb="$rss_mb" -max_len=32768 -print_final_stats=1 \
+       -artifact_prefix="$out/findings/$target/" >"$out/$target.log" 2>&1 || status=1
+  grep -E '^(stat::|#[0-9]+ +DONE)' "$out/$target.log" || true
+done
+exit $status
