@@ -282,7 +282,10 @@ PnmHeader readPnmHeader(const Reader& in) {
         long long value = 0;
         while (in.has(at, 1) && std::isdigit(in.byte(at))) {
             value = value * 10 + (in.byte(at++) - '0');
-            if (value > 1000000000LL) in.fail(std::string("the PNM header's ") + names[field] + " is far too large");
+            if (value > 1000000000000LL) {
+                in.fail(std::string("the PNM header's ") + names[field] + " (" + std::to_string(value) +
+                        "...) is far too large");
+            }
         }
         *fields[field] = value;
         if (in.has(at, 1) && !std::isspace(in.byte(at))) {
