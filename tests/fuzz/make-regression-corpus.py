@@ -97,12 +97,12 @@ def jpeg_size(data):
     return width, height
 
 
-def obj_polygon(corners, star=False, normals=False):
+def obj_polygon(corners, star=False, normals=False, turns=1, digits=7):
     lines = []
     for i in range(corners):
-        angle = 2 * math.pi * i / corners
+        angle = 2 * math.pi * turns * i / corners
         radius = (1.0 if i % 2 == 0 else 0.5) if star else 1.0
-        lines.append("v %.7f %.7f 0" % (radius * math.cos(angle), radius * math.sin(angle)))
+        lines.append("v %.*f %.*f 0" % (digits, radius * math.cos(angle), digits, radius * math.sin(angle)))
     if normals:
         lines.append("vn 0 0 1")
     lines.append("f " + " ".join(("%d//1" % (i + 1)) if normals else str(i + 1) for i in range(corners)))
@@ -194,6 +194,9 @@ def regression():
         "ok-convex-100000-corners-with-normals.obj": obj_polygon(100000, normals=True),
         "err-star-100000-corners.obj": obj_polygon(100000, star=True),
         "ok-star-64-corners.obj": obj_polygon(64, star=True),
+        "ok-convex-40000-corners-4-decimals.obj": obj_polygon(40000, digits=4),
+        "err-winds-twice-1000-corners.obj": obj_polygon(1000, turns=2),
+        "ok-winds-twice-60-corners.obj": obj_polygon(60, turns=2),
         "err-star-66-corners.obj": obj_polygon(66, star=True),
         # tinyobjloader's `t` tag allocated what its counts asked for.
         "ok-t-tag-huge-counts.obj": TRIANGLE + "t crease 2000000000/2000000000/0\nf 1 2 3\n",

@@ -87,6 +87,30 @@ TEST_CASE("Issue 14: a non-convex face past the corner cap is an error naming it
         CHECK(contains(error.message(), "100000 corners and is not convex"));
         CHECK(contains(error.message(), "at most " + std::to_string(maxNonConvexFaceCorners)));
     }
+    SECTION("a face that winds twice around its centre, every corner turning the same way") {
+        std::ostringstream text;
+        for (int i = 0; i < 1000; ++i) {
+            const double angle = 4.0 * M_PI * i / 1000;
+            text << "v " << std::cos(angle) << ' ' << std::sin(angle) << " 0\n";
+        }
+        text << "f";
+        for (int i = 1; i <= 1000; ++i) text << ' ' << i;
+        const fs::path path = folder.write("twice.obj", text.str() + "\n");
+        CHECK(contains(errorAt(path, path, 1001).message(), "1000 corners and is not convex"));
+    }
+    SECTION("a circle of 40,000 corners written with 4 decimals is convex enough for a fan") {
+        std::ostringstream text;
+        text.setf(std::ios::fixed);
+        text.precision(4);
+        for (int i = 0; i < 40000; ++i) {
+            const double angle = 2.0 * M_PI * i / 40000;
+            text << "v " << std::cos(angle) << ' ' << std::sin(angle) << " 0\n";
+        }
+        text << "f";
+        for (int i = 1; i <= 40000; ++i) text << ' ' << i;
+        const Model model = loadObj(folder.write("rounded.obj", text.str() + "\n"));
+        CHECK(model.parts.at(0).mesh.triangleCount() == 39998);
+    }
     SECTION("a star of 64 corners is still clipped into ears") {
         const fs::path path = folder.write("star64.obj", polygon(64, true));
         const Model model = loadObj(path);

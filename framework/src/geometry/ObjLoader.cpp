@@ -452,33 +452,32 @@ void triangulate(const std::vector<Corner>& face, const std::vector<glm::vec3>& 
         // (y, z), (z, x), (x, y): counter-clockwise seen along the normal when sign > 0.
         points[i] = glm::dvec2(p[(drop + 1) % 3], sign * p[(drop + 2) % 3]);
     }
-    // Convex: every corner turns the same way, and the edges sweep around
-    // once (their x and y each change sign at most twice). Both within the
-    // rounding of float positions written as text: a circle of 100,000
-    // corners is convex, though its neighbouring corners differ in the
-    // seventh digit only.
-    double scale = 0.0;
-    for (const glm::dvec2& p : points) scale = std::max({scale, std::abs(p.x), std::abs(p.y)});
-    const double noise = scale * 1e-6;
+    // Convex: no corner turns against the others by more than `tolerance`
+    // (a distance: 1e-4 of the face's extent, or float rounding far from the
+    // origin), and the turns add up to one full sweep (not two, as in a star
+    // drawn in one stroke). A circle of 100,000 corners written with 4 to 7
+    // decimals is convex; a fan of a face this close to convex differs from
+    // it by less than the tolerance.
+    glm::dvec2 lower = points[0], upper = points[0];
+    for (const glm::dvec2& p : points) {
+        lower = glm::min(lower, p);
+        upper = glm::max(upper, p);
+    }
+    const double extent = std::max(upper.x - lower.x, upper.y - lower.y);
+    const double farthest = std::max({std::abs(lower.x), std::abs(lower.y), std::abs(upper.x), std::abs(upper.y)});
+    const double tolerance = std::max(extent * 1e-4, farthest * 1e-6);
     bool convex = true;
-    int xChanges = 0, yChanges = 0;
-    double lastX = 0.0, lastY = 0.0;
-    for (std::size_t i = 0; i < n + 1 && convex; ++i) {
-        const glm::dvec2 a = points[i % n], b = points[(i + 1) % n], c = points[(i + 2) % n];
+    double sweep = 0.0;
+    for (std::size_t i = 0; i < n && convex; ++i) {
+        const glm::dvec2 a = points[i], b = points[(i + 1) % n], c = points[(i + 2) % n];
         const glm::dvec2 e1 = b - a, e2 = c - b;
         const double turn = e1.x * e2.y - e1.y * e2.x;
-        if (turn < -noise * (glm::length(e1) + glm::length(e2))) convex = false;
-        if (std::abs(e1.x) > noise) {
-            if (lastX != 0.0 && (e1.x > 0.0) != (lastX > 0.0)) ++xChanges;
-            lastX = e1.x;
-        }
-        if (std::abs(e1.y) > noise) {
-            if (lastY != 0.0 && (e1.y > 0.0) != (lastY > 0.0)) ++yChanges;
-            lastY = e1.y;
-        }
+        // turn / |c - a| is how far b lies on the reflex side of the line from a to c.
+        if (turn < -tolerance * glm::length(c - a)) convex = false;
+        sweep += std::atan2(turn, glm::dot(e1, e2));
     }
-    // The loop looks at the first edge twice, so a closed sweep shows at most 2 changes each way.
-    if (convex && xChanges <= 2 && yChanges <= 2) {
+    convex = convex && std::abs(sweep - 2.0 * M_PI) < 0.5;
+    if (convex) {
         for (std::size_t k = 1; k + 1 < n; ++k) {
             out.push_back(face[0]);
             out.push_back(face[k]);

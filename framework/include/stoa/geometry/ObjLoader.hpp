@@ -43,7 +43,8 @@ inline constexpr int maxNonConvexFaceCorners = 64;
 ///   (computeSmoothNormals, exact for huge and tiny triangles alike).
 ///   Smoothing groups are ignored.
 /// - Faces keep their winding: a triangle as it is; a quad split along its
-///   shorter diagonal; a convex polygon as a fan from its first corner; a
+///   shorter diagonal; a convex polygon (within 1e-4 of its extent) as a fan
+///   from its first corner; a
 ///   non-convex polygon of up to maxNonConvexFaceCorners corners by ear
 ///   clipping. No face vanishes: a polygon that repeats a vertex is an error.
 /// - Within a part, OBJ corners with the same (position, normal, uv) indices
