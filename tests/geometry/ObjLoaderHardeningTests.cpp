@@ -14,6 +14,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -265,4 +266,18 @@ TEST_CASE("Issue 14: messages name the real cause", "[geometry][obj][issue14]") 
         const fs::path path = folder.write("points.obj", kTriangle);
         CHECK(contains(errorAt(path, path, 0).message(), "none of its 3 lines is an f line"));
     }
+}
+
+TEST_CASE("Issue 14: an MTL file past its size cap is refused before it is read", "[geometry][obj][issue14]") {
+    TempFolder folder("obj-hardening");
+    const fs::path mtl = folder / "big.mtl";
+    {
+        std::ofstream out(mtl, std::ios::binary);
+        out.seekp(static_cast<std::streamoff>(maxMtlFileBytes));  // a sparse file one byte past the cap
+        out.put('\n');
+    }
+    const fs::path path = folder.write("big.obj", "mtllib big.mtl\n" + kTriangle + "f 1 2 3\n");
+    const InputError error = errorAt(path, path, 1);
+    CHECK(contains(error.message(), "too large"));
+    CHECK(contains(error.message(), "16 MiB) for an MTL file"));
 }

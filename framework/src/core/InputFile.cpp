@@ -61,9 +61,9 @@ std::string readInputFile(const std::filesystem::path& path, std::size_t maxByte
         throw InputError(name, 0, "this is " + describeType(info.st_mode) + ", not " + kind);
     }
     auto tooLarge = [&](const std::string& size) {
-        return InputError(name, 0, "the file is too large: " + size + " bytes, but " + kind + "s are limited to " +
+        return InputError(name, 0, "the file is too large: " + size + " bytes, past the limit of " +
                                        std::to_string(maxBytes) + " bytes (" + std::to_string(maxBytes >> 20) +
-                                       " MiB)");
+                                       " MiB) for " + kind);
     };
     if (static_cast<unsigned long long>(info.st_size) > maxBytes) throw tooLarge(std::to_string(info.st_size));
 
