@@ -18,7 +18,7 @@ sanitize="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit
 flags="-O1 -g $sanitize -fsanitize=fuzzer-no-link -I$root/framework/include -I/usr/include/stb -DNDEBUG"
 sources=(
   framework/src/core/Errors.cpp framework/src/core/InputFile.cpp
-  framework/src/geometry/Mesh.cpp framework/src/geometry/ObjLoader.cpp
+  framework/src/geometry/Mesh.cpp framework/src/geometry/ObjLoader.cpp framework/src/geometry/FaceTriangulation.cpp
   framework/src/image/Image.cpp framework/src/image/ImageFile.cpp framework/src/image/JpegCheck.cpp
   framework/src/image/HeightMap.cpp
   tests/fuzz/FuzzTargets.cpp
