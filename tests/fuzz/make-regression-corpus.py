@@ -97,6 +97,15 @@ def jpeg_size(data):
     return width, height
 
 
+def jpeg_scan_repeats_component():
+    """The seed rgb16.jpg with its scan's three components all renamed to component 1."""
+    data = bytearray(open(os.path.join(HERE, "seeds", "rgb16.jpg"), "rb").read())
+    at = data.index(b"\xff\xda")
+    for i in range(3):
+        data[at + 5 + 2 * i] = 1
+    return bytes(data)
+
+
 def obj_polygon(corners, star=False, normals=False, turns=1, digits=7):
     lines = []
     for i in range(corners):
@@ -186,6 +195,10 @@ def regression():
         "err-tga-truncated.tga": tga(16, 16)[:100],
         "err-jpg-arithmetic.jpg": floor[:jpeg_frame_offset(floor) + 1] + b"\xc9" + floor[jpeg_frame_offset(floor) + 2:],
         "ok-jpg-floor.jpg": floor,
+        # Found by fuzz-heightmap (issue 14's 10-minute run): a scan that names component 1 three
+        # times with different AC tables; stb_image keeps the last choice for all three, read past
+        # the data and shifted by 32 (UBSan, stb_image.h:2065).
+        "err-jpg-scan-names-a-component-three-times.jpg": jpeg_scan_repeats_component(),
     }
     huge_convex = obj_polygon(100000)
     objs = {

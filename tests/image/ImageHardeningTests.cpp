@@ -111,6 +111,13 @@ TEST_CASE("Issue 14: JPGs whose data cannot fill their header's size are refused
         CHECK(contains(message, "image data ends after"));
         CHECK(contains(message, "64x96"));
     }
+    SECTION("a scan naming one component three times (found by fuzzing: UB inside stb_image)") {
+        std::string bytes = good;
+        const std::size_t scan = bytes.find("\xff\xda");
+        REQUIRE(scan != std::string::npos);
+        for (int i = 0; i < 3; ++i) bytes[scan + 5 + 2 * std::size_t(i)] = 1;
+        CHECK(contains(refused(folder.write("repeated.jpg", bytes)), "names component 1 twice"));
+    }
     SECTION("truncated: the message is about the JPG, not a PNG signature") {
         const std::string message = refused(folder.write("cut.jpg", good.substr(0, good.size() / 2)));
         CHECK(contains(message, "JPG"));

@@ -115,6 +115,11 @@ void JpegWalk::readFrame(std::size_t at, std::size_t end, bool progressive) {
             fail("the JPG is damaged: a component has sampling factors " + std::to_string(component.h) + "x" +
                  std::to_string(component.v) + " (1 to 4 allowed)");
         }
+        for (const Component& other : m_components) {
+            if (other.id == component.id) {
+                fail("the JPG's frame header names component " + std::to_string(component.id) + " twice");
+            }
+        }
         m_maxH = std::max(m_maxH, component.h);
         m_maxV = std::max(m_maxV, component.v);
         m_components.push_back(component);
@@ -191,6 +196,12 @@ std::size_t JpegWalk::walkScan(std::size_t at, std::size_t end) {
             if (component.id == id) found = &component;
         }
         if (!found) fail("the JPG's scan names component " + std::to_string(id) + ", which its frame lacks");
+        // stb_image keeps one Huffman table choice per component, so a
+        // component named twice would be decoded with other tables than
+        // these; the standard does not allow it.
+        for (const Component& earlier : scan) {
+            if (earlier.id == id) fail("the JPG's scan names component " + std::to_string(id) + " twice");
+        }
         Component component = *found;
         component.dcTable = m_bytes[at + 2 + 2 * i] >> 4;
         component.acTable = m_bytes[at + 2 + 2 * i] & 15;
