@@ -408,12 +408,12 @@ TEST_CASE("loadObj reports missing MTL files and unknown materials", "[geometry]
     }
 }
 
-TEST_CASE("loadObj reports lines tinyobjloader rejects, with their line", "[geometry][obj][errors]") {
+TEST_CASE("loadObj checks the indices of lines and points too, with their line", "[geometry][obj][errors]") {
     TemporaryFolder folder;
-    // A polyline with index 0: tinyobjloader refuses it (the scan only checks faces).
+    // A polyline with index 0: not drawn, but as wrong as a face with one.
     const fs::path path = folder.write("polyline.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 0\n");
     const std::string message = loadError(path, path, 5);
-    CHECK(contains(message, "tinyobjloader"));
+    CHECK(contains(message, "vertex 0, but OBJ indices start at 1"));
 }
 
 TEST_CASE("loadObj reports a model without faces", "[geometry][obj][errors]") {

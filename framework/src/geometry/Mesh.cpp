@@ -85,10 +85,36 @@ void computeSmoothNormals(Mesh& mesh) {
         sums[i1] += faceNormal;
         sums[i2] += faceNormal;
     }
+    bool exact = true;
     for (std::size_t i = 0; i < sums.size(); ++i) {
         const float length = glm::length(sums[i]);
         const bool usable = length > 0.0f && std::isfinite(length);
+        // A sum past float's range (a huge triangle: its cross product
+        // overflows) or lost to underflow (a tiny one): redo it in double.
+        if (!usable || length < 1e-18f) exact = false;
         mesh.vertices[i].normal = usable ? sums[i] / length : glm::vec3(0.0f, 1.0f, 0.0f);
+    }
+    if (exact) return;
+    // The same sums in double, where float positions cannot overflow a cross
+    // product (2 * 3.4e38^2 is far below 1.8e308) nor underflow one. Only
+    // meshes that need it take this path, so the normals of every other mesh
+    // keep their float bits.
+    std::vector<glm::dvec3> wide(mesh.vertices.size(), glm::dvec3(0.0));
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const std::uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
+        const glm::dvec3 p0(mesh.vertices[i0].position);
+        const glm::dvec3 faceNormal =
+            glm::cross(glm::dvec3(mesh.vertices[i1].position) - p0, glm::dvec3(mesh.vertices[i2].position) - p0);
+        wide[i0] += faceNormal;
+        wide[i1] += faceNormal;
+        wide[i2] += faceNormal;
+    }
+    for (std::size_t i = 0; i < wide.size(); ++i) {
+        const float length = glm::length(sums[i]);
+        if (length > 0.0f && std::isfinite(length) && length >= 1e-18f) continue;  // exact in float already
+        const double wideLength = glm::length(wide[i]);
+        const bool usable = wideLength > 0.0 && std::isfinite(wideLength);
+        mesh.vertices[i].normal = usable ? glm::vec3(wide[i] / wideLength) : glm::vec3(0.0f, 1.0f, 0.0f);
     }
 }
 

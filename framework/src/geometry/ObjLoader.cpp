@@ -1,71 +1,81 @@
 #include <stoa/geometry/ObjLoader.hpp>
 
+#include "FaceTriangulation.hpp"
+
 #include <stoa/core/InputError.hpp>
+#include <stoa/core/InputFile.hpp>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
-#include <tiny_obj_loader.h>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
+#include <iostream>
 #include <map>
 #include <optional>
-#include <regex>
 #include <set>
-#include <sstream>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 
-// Loading happens in two passes over the OBJ text.
-//
-// 1. Our own scan (scanObj) checks what tinyobjloader would accept silently or
-//    report without a usable line number: numbers that are malformed, NaN or
-//    infinite (it reads them as 0 or keeps them), face indices that point
-//    past what is defined so far (it only warns, once, at the end of the
-//    file), mtllib files that do not exist and usemtl names that no MTL
-//    defines (both only warnings: the faces quietly get a default material).
-//    The scan also reads each MTL file, to check its numbers the same way and
-//    to know which colours it sets, so that a colour it leaves out keeps the
-//    Material default instead of tinyobjloader's black.
-// 2. tinyobjloader parses the file for real and triangulates polygons; we
-//    then gather its faces into one mesh per material.
+// One pass over the OBJ text reads and checks every line (tinyobjloader used
+// to parse it a second time; it could not be made to refuse what this loader
+// refuses, triangulated large polygons in quadratic time, counted corners in
+// an unsigned char, and allocated what a `t` line asked for): positions, uvs
+// and normals into arrays, faces into triangles of the part of their
+// material. MTL files are read the same way. Then the triangles' corners
+// become vertices, one per distinct (position, normal, uv).
 
 namespace stoa {
 
 namespace fs = std::filesystem;
 
+using detail::Corner;
+using detail::CornerHash;
+using detail::triangulate;
+
 namespace {
 
-std::optional<std::string> readText(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+std::string excerpt(std::string_view word) { return quoteInput(std::string(word)); }
+
+/// The text of an OBJ or MTL file: no UTF-16, no UTF-8 byte-order mark.
+std::string_view checkedText(const std::string& text, const std::string& file) {
+    const bool utf16Mark = text.size() >= 2 && ((static_cast<unsigned char>(text[0]) == 0xFF &&
+                                                  static_cast<unsigned char>(text[1]) == 0xFE) ||
+                                                 (static_cast<unsigned char>(text[0]) == 0xFE &&
+                                                  static_cast<unsigned char>(text[1]) == 0xFF));
+    // Without a mark, UTF-16 text shows as a NUL byte next to every ASCII letter of its first characters.
+    const bool utf16Zeros = text.size() >= 4 && (text[0] == '\0' || text[1] == '\0') && (text[2] == '\0' || text[3] == '\0');
+    if (utf16Mark || utf16Zeros) throw InputError(file, 0, "UTF-16 is not supported; save the file as UTF-8");
+    std::string_view view = text;
+    if (view.substr(0, 3) == "\xEF\xBB\xBF") view.remove_prefix(3);  // a UTF-8 byte-order mark
+    return view;
 }
 
 /// Calls visit(lineNumber, line, words) for every line of `text` (numbered
-/// from 1), with the line split into words at spaces and tabs. Blank lines and
-/// whole-line comments are skipped; a comment after other words is left to
-/// the caller (tinyobjloader accepts one after "v 1 2 3", not after a face).
+/// from 1; lines end at LF, CR LF or a lone CR), with the line split into
+/// words at spaces and tabs. Blank lines and whole-line comments are skipped;
+/// a comment after other words is left to the caller.
 template <typename Visit>
-void forEachLine(const std::string& text, Visit visit) {
-    std::istringstream in(text);
-    std::string line;
+void forEachLine(std::string_view text, Visit visit) {
     int lineNumber = 0;
     std::vector<std::string_view> words;
-    while (std::getline(in, line)) {
+    std::size_t at = 0;
+    while (at < text.size()) {
+        std::size_t end = at;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+        const std::string_view line = text.substr(at, end - at);
+        at = end + (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n' ? 2 : 1);
         ++lineNumber;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
         words.clear();
-        std::string_view rest = line;
-        while (!rest.empty()) {
-            const std::size_t start = rest.find_first_not_of(" \t");
-            if (start == std::string_view::npos) break;
-            rest.remove_prefix(start);
-            const std::size_t end = std::min(rest.find_first_of(" \t"), rest.size());
-            words.push_back(rest.substr(0, end));
-            rest.remove_prefix(end);
+        for (std::size_t i = 0; i < line.size();) {
+            while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+            const std::size_t start = i;
+            while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+            if (i > start) words.push_back(line.substr(start, i - start));
         }
         if (words.empty() || words.front().front() == '#') continue;
         visit(lineNumber, line, words);
@@ -80,6 +90,16 @@ void dropComment(std::vector<std::string_view>& words) {
             return;
         }
     }
+}
+
+/// The rest of `line` after its first word, without surrounding blanks: a
+/// name that may hold spaces ("newmtl old wood", "usemtl old wood").
+std::string restOfLine(std::string_view line, std::string_view key) {
+    std::size_t start = line.find(key) + key.size();
+    while (start < line.size() && (line[start] == ' ' || line[start] == '\t')) ++start;
+    std::size_t end = line.size();
+    while (end > start && (line[end - 1] == ' ' || line[end - 1] == '\t')) --end;
+    return std::string(line.substr(start, end - start));
 }
 
 /// Reads `word` as a finite number, or throws InputError(file, line, ...).
@@ -97,26 +117,26 @@ float finiteNumber(std::string_view word, const std::string& file, int line) {
     }
     if ((error == std::errc::result_out_of_range && whole) ||
         (error == std::errc() && whole && !std::isfinite(static_cast<float>(value)))) {
-        throw InputError(file, line, "the number '" + std::string(word) +
+        throw InputError(file, line, "the number '" + excerpt(word) +
                                          "' is not finite (NaN, infinite, or too large for a float)");
     }
     if (error != std::errc() || !whole) {
-        throw InputError(file, line, "expected a number, found '" + std::string(word) + "'");
+        throw InputError(file, line, "expected a number, found '" + excerpt(word) + "'");
     }
     return static_cast<float>(value);
 }
 
-/// Checks that words[1..] are between `least` and `most` finite numbers and returns them.
-std::vector<float> numbers(const std::vector<std::string_view>& words, std::size_t least, std::size_t most,
-                           const char* expected, const std::string& file, int line) {
+/// Checks that words[1..] are between `least` and `most` finite numbers and
+/// writes them to `values` (which holds `most`); returns their count.
+std::size_t numbers(const std::vector<std::string_view>& words, std::size_t least, std::size_t most,
+                    const char* expected, const std::string& file, int line, float* values) {
     const std::size_t count = words.size() - 1;
     if (count < least || count > most) {
         throw InputError(file, line, std::string(words[0]) + " needs " + expected + ", found " + std::to_string(count) +
                                          (count == 1 ? " value" : " values"));
     }
-    std::vector<float> values;
-    for (std::size_t i = 1; i < words.size(); ++i) values.push_back(finiteNumber(words[i], file, line));
-    return values;
+    for (std::size_t i = 1; i < words.size(); ++i) values[i - 1] = finiteNumber(words[i], file, line);
+    return count;
 }
 
 /// What our own read of an MTL file found for one material: the colours the
@@ -165,7 +185,7 @@ TextureStatement textureStatement(const std::vector<std::string_view>& words, co
     while (i < words.size() && words[i].size() > 1 && words[i].front() == '-' && !isNumber(words[i])) {
         const auto option = options.find(words[i]);
         if (option == options.end()) {
-            throw InputError(file, line, std::string(words[0]) + ": unknown texture option '" + std::string(words[i]) +
+            throw InputError(file, line, std::string(words[0]) + ": unknown texture option '" + excerpt(words[i]) +
                                              "' (expected one of -blendu -blendv -bm -boost -cc -clamp -imfchan "
                                              "-mm -o -s -t -texres -type, then the file name)");
         }
@@ -176,7 +196,7 @@ TextureStatement textureStatement(const std::vector<std::string_view>& words, co
             ++values;
         }
         if (static_cast<int>(values) < fewest) {
-            throw InputError(file, line, std::string(words[0]) + ": the option " + std::string(words[i]) + " needs " +
+            throw InputError(file, line, std::string(words[0]) + ": the option " + excerpt(words[i]) + " needs " +
                                              std::to_string(fewest) + (fewest == 1 ? " value" : " values"));
         }
         if (words[i] == "-bm") statement.bumpMultiplier = finiteNumber(words[i + 1], file, line);
@@ -188,7 +208,7 @@ TextureStatement textureStatement(const std::vector<std::string_view>& words, co
     statement.path = resolveTexture(name, folder);
     std::error_code error;
     if (!fs::is_regular_file(statement.path, error)) {
-        throw InputError(file, line, std::string(words[0]) + " names '" + name + "', but " + statement.path.string() +
+        throw InputError(file, line, std::string(words[0]) + " names '" + quoteInput(name) + "', but " + quoteInput(statement.path.string(), 200) +
                                          " does not exist or is not a file (texture paths are relative to the "
                                          "MTL file's folder)");
     }
@@ -203,23 +223,36 @@ glm::vec3 mtlColour(const std::vector<std::string_view>& words, const std::strin
         throw InputError(file, line, std::string(words[0]) + " " + std::string(words[1]) +
                                          " is not supported; give the colour as r g b in [0, 1]");
     }
-    const std::vector<float> rgb = numbers(words, 1, 3, "a colour (r g b)", file, line);
-    if (rgb.size() == 2) throw InputError(file, line, std::string(words[0]) + " needs 1 or 3 numbers, found 2");
-    return rgb.size() == 1 ? glm::vec3(rgb[0]) : glm::vec3(rgb[0], rgb[1], rgb[2]);
+    float rgb[3];
+    const std::size_t count = numbers(words, 1, 3, "a colour (r g b)", file, line, rgb);
+    if (count == 2) throw InputError(file, line, std::string(words[0]) + " needs 1 or 3 numbers, found 2");
+    return count == 1 ? glm::vec3(rgb[0]) : glm::vec3(rgb[0], rgb[1], rgb[2]);
 }
 
-std::vector<MtlEntry> scanMtl(const fs::path& mtlPath, const std::string& text) {
+/// A colour clamped to [0, 1], with a warning naming the line when it was outside.
+glm::vec3 clampedColour(glm::vec3 colour, std::string_view key, const std::string& file, int line,
+                        std::ostream& warnings) {
+    const glm::vec3 clamped = glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f));
+    if (clamped != colour) {
+        warnings << "stoa: warning: " << file << ":" << line << ": " << key << " (" << colour.x << ", " << colour.y
+                 << ", " << colour.z << ") is outside [0, 1]; clamped to (" << clamped.x << ", " << clamped.y << ", "
+                 << clamped.z << ")\n";
+    }
+    return clamped;
+}
+
+std::vector<MtlEntry> scanMtl(const fs::path& mtlPath, const std::string& text, std::ostream& warnings) {
     const std::string file = mtlPath.string();
-    const fs::path folder = fs::absolute(mtlPath).parent_path();
+    std::error_code ignored;
+    const fs::path absolute = fs::absolute(mtlPath, ignored);
+    const fs::path folder = (absolute.empty() ? mtlPath : absolute).parent_path();
     std::vector<MtlEntry> entries;
-    forEachLine(text, [&](int line, const std::string& raw, std::vector<std::string_view> words) {
+    forEachLine(checkedText(text, file), [&](int line, std::string_view raw, std::vector<std::string_view>& words) {
         dropComment(words);
         const std::string_view key = words[0];
         if (key == "newmtl") {
-            // As tinyobjloader does: the name is the rest of the line after "newmtl ".
-            const std::size_t start = raw.find("newmtl") + 7;
-            std::string name = start < raw.size() ? raw.substr(start) : std::string();
-            name.erase(name.find_last_not_of(" \t") + 1);
+            // The name is the rest of the line: exporters write names with spaces.
+            std::string name = restOfLine(raw, "newmtl");
             if (name.empty()) throw InputError(file, line, "newmtl needs a material name");
             entries.push_back({name, folder, {}, {}, {}, {}, {}, {}, {}, {}, 1.0f});
             return;
@@ -228,7 +261,7 @@ std::vector<MtlEntry> scanMtl(const fs::path& mtlPath, const std::string& text) 
         if (key == "map_Kd" || key == "map_Ks" || key == "norm" || key == "map_bump" || key == "map_Bump" ||
             key == "bump") {
             const TextureStatement texture = textureStatement(words, folder, file, line);
-            if (!entry) return;  // before any newmtl: tinyobjloader ignores it too
+            if (!entry) return;  // before any newmtl: no material to attach it to
             if (key == "map_Kd") entry->diffuseMap = texture.path.string();
             if (key == "map_Ks") entry->specularMap = texture.path.string();
             if (key == "norm") entry->normalMap = texture.path.string();
@@ -238,36 +271,41 @@ std::vector<MtlEntry> scanMtl(const fs::path& mtlPath, const std::string& text) 
             }
             return;
         }
-        if (key != "Ka" && key != "Kd" && key != "Ks" && key != "Ke" && key != "Tf" && key != "Ns" && key != "Ni" &&
-            key != "d" && key != "Tr") {
-            return;  // other maps, illum and unknown statements: tinyobjloader's business (and unused)
-        }
         if (key == "Ka" || key == "Kd" || key == "Ks" || key == "Ke" || key == "Tf") {
             const glm::vec3 colour = mtlColour(words, file, line);
-            if (entry && key == "Ka") entry->ambient = colour;
-            if (entry && key == "Kd") entry->diffuse = colour;
-            if (entry && key == "Ks") entry->specular = colour;
-        } else {
+            if (!entry) return;
+            if (key == "Ka") entry->ambient = clampedColour(colour, key, file, line, warnings);
+            if (key == "Kd") entry->diffuse = clampedColour(colour, key, file, line, warnings);
+            if (key == "Ks") entry->specular = clampedColour(colour, key, file, line, warnings);
+        } else if (key == "Ns" || key == "Ni" || key == "d" || key == "Tr") {
             if (key == "d" && words.size() > 1 && words[1] == "-halo") words.erase(words.begin() + 1);
-            const float value = numbers(words, 1, 1, "one number", file, line)[0];
-            if (entry && key == "Ns") entry->shininess = value;
+            float value = 0.0f;
+            numbers(words, 1, 1, "one number", file, line, &value);
+            if (entry && key == "Ns") {
+                if (value < 0.0f) {
+                    warnings << "stoa: warning: " << file << ":" << line << ": Ns " << value
+                             << " is negative; a Blinn-Phong exponent must be >= 0, clamped to 0\n";
+                    value = 0.0f;
+                }
+                entry->shininess = value;
+            }
         }
+        // Other maps, illum and unknown statements are not used.
     });
     return entries;
 }
 
-/// What scanObj learned besides "the file is well formed".
-struct ObjScan {
-    int faceCount = 0;
-    std::vector<MtlEntry> materials;                          // from every mtllib, in file order
-    std::vector<std::pair<std::string, int>> usedMaterials;  // usemtl name, line
+/// The triangles of one material while the file is read.
+struct PartTriangles {
+    std::string material;  // empty: no usemtl (Material{})
+    std::vector<Corner> corners;  // 3 per triangle
 };
 
-/// Checks one face corner "v", "v/vt", "v//vn" or "v/vt/vn" against the
-/// counts of positions, uvs and normals defined so far.
-void checkCorner(std::string_view corner, int positions, int uvs, int normals, const std::string& file, int line) {
+/// Reads one face corner "v", "v/vt", "v//vn" or "v/vt/vn", checked against
+/// the counts of positions, uvs and normals defined so far.
+Corner readCorner(std::string_view corner, int positions, int uvs, int normals, const std::string& file, int line) {
     auto malformed = [&]() {
-        std::string message = "expected a face corner like 3, 3/1, 3//2 or 3/1/2, found '" + std::string(corner) + "'";
+        std::string message = "expected a face corner like 3, 3/1, 3//2 or 3/1/2, found '" + excerpt(corner) + "'";
         if (corner.front() == '#') message += " (comments must be on a line of their own after f)";
         throw InputError(file, line, message);
     };
@@ -283,109 +321,42 @@ void checkCorner(std::string_view corner, int positions, int uvs, int normals, c
     const char* names[3] = {"vertex", "texture coordinate", "normal"};
     const char* plurals[3] = {"vertices (v)", "texture coordinates (vt)", "normals (vn)"};
     const int defined[3] = {positions, uvs, normals};
+    int resolved[3] = {-1, -1, -1};
     for (std::size_t i = 0; i < partCount; ++i) {
         if (parts[i].empty()) {
             if (i == 1 && partCount == 3) continue;  // "v//vn" has no uv
             malformed();
         }
-        int index = 0;
-        const auto [end, error] = std::from_chars(parts[i].data(), parts[i].data() + parts[i].size(), index);
-        if (error != std::errc() || end != parts[i].data() + parts[i].size()) malformed();
+        std::string_view digits = parts[i];
+        if (digits.front() == '+') digits.remove_prefix(1);
+        long long index = 0;
+        const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+        if (end != digits.data() + digits.size() || (error != std::errc() && error != std::errc::result_out_of_range)) {
+            malformed();
+        }
+        if (error == std::errc::result_out_of_range) index = digits.front() == '-' ? -(1LL << 62) : (1LL << 62);
         if (index == 0) {
             throw InputError(file, line, std::string("face refers to ") + names[i] +
                                              " 0, but OBJ indices start at 1 (or count back from -1)");
         }
-        if (std::abs(static_cast<long>(index)) > defined[i]) {
-            throw InputError(file, line, std::string("face refers to ") + names[i] + " " + std::to_string(index) +
+        if (index > defined[i] || index < -static_cast<long long>(defined[i])) {
+            throw InputError(file, line, std::string("face refers to ") + names[i] + " " + excerpt(parts[i]) +
                                              (index < 0 ? " (counting back)" : "") + " but only " +
                                              std::to_string(defined[i]) + " " + plurals[i] +
                                              " are defined so far");
         }
+        resolved[i] = static_cast<int>(index > 0 ? index - 1 : defined[i] + index);
     }
+    return {resolved[0], resolved[1], resolved[2]};
 }
 
-ObjScan scanObj(const fs::path& path, const std::string& text) {
-    const std::string file = path.string();
-    ObjScan scan;
-    int positions = 0, uvs = 0, normals = 0;
-    std::set<std::string> loadedMtlFiles;  // each MTL file is read once, as tinyobjloader does
-
-    forEachLine(text, [&](int line, const std::string&, std::vector<std::string_view> words) {
-        const std::string_view key = words[0];
-        if (key == "f") {
-            if (words.size() < 4) {
-                throw InputError(file, line,
-                                 "a face needs at least 3 corners, found " + std::to_string(words.size() - 1));
-            }
-            for (std::size_t i = 1; i < words.size(); ++i) checkCorner(words[i], positions, uvs, normals, file, line);
-            ++scan.faceCount;
-            return;
-        }
-        dropComment(words);
-        if (key == "v") {
-            // x y z, optionally w or a colour r g b; tinyobjloader reads 3 or 6.
-            numbers(words, 3, 7, "3 numbers (x y z)", file, line);
-            ++positions;
-        } else if (key == "vt") {
-            numbers(words, 1, 3, "1 to 3 numbers (u v)", file, line);
-            ++uvs;
-        } else if (key == "vn") {
-            numbers(words, 3, 3, "3 numbers (x y z)", file, line);
-            ++normals;
-        } else if (key == "mtllib") {
-            // tinyobjloader splits the line at spaces and loads only the first file it finds.
-            if (words.size() < 2) throw InputError(file, line, "mtllib needs the name of an MTL file");
-            if (words.size() > 2) {
-                throw InputError(file, line, "mtllib names " + std::to_string(words.size() - 1) +
-                                                 " files; put each MTL file on an mtllib line of its own "
-                                                 "(file names cannot contain spaces)");
-            }
-            const std::string name(words[1]);
-            if (loadedMtlFiles.count(name)) return;
-            const fs::path mtlPath = path.parent_path() / name;
-            const std::optional<std::string> mtlText = readText(mtlPath);
-            if (!mtlText) {
-                throw InputError(file, line, "mtllib names '" + name + "', but " + mtlPath.string() +
-                                                 " does not exist or cannot be read (MTL files are looked for "
-                                                 "next to the OBJ file)");
-            }
-            loadedMtlFiles.insert(name);
-            for (MtlEntry& entry : scanMtl(mtlPath, *mtlText)) scan.materials.push_back(std::move(entry));
-        } else if (key == "usemtl") {
-            if (words.size() < 2) throw InputError(file, line, "usemtl needs a material name");
-            const std::string name(words[1]);
-            bool defined = false;
-            for (const MtlEntry& entry : scan.materials) defined = defined || entry.name == name;
-            if (!defined) {
-                const std::string reason = loadedMtlFiles.empty() ? "no mtllib line comes before it"
-                                                                  : "no MTL file named by an earlier mtllib defines it";
-                throw InputError(file, line, "usemtl names material '" + name + "', but " + reason);
-            }
-            scan.usedMaterials.emplace_back(name, line);
-        }
-    });
-    return scan;
-}
-
-/// Turns tinyobjloader's error text into an InputError, taking the line number
-/// from it when it names one ("... line 12.)").
-InputError tinyobjError(const std::string& file, std::string message) {
-    int line = 0;
-    std::smatch match;
-    if (std::regex_search(message, match, std::regex("line[:]? *([0-9]+)"))) line = std::stoi(match[1]);
-    while (!message.empty() && std::isspace(static_cast<unsigned char>(message.back()))) message.pop_back();
-    for (char& c : message) {
-        if (c == '\n') c = ' ';
-    }
-    return InputError(file, line, "tinyobjloader rejected the file: " + message);
-}
-
-Material makeMaterial(const tinyobj::material_t& parsed, const std::vector<MtlEntry>& entries) {
+Material makeMaterial(const std::string& name, const std::vector<MtlEntry>& entries) {
     Material material;
-    material.name = parsed.name;
-    // The first MTL entry of that name, as tinyobjloader keeps the first too.
+    if (name.empty()) return material;
+    material.name = name;
+    // The first MTL entry of that name.
     for (const MtlEntry& entry : entries) {
-        if (entry.name != parsed.name) continue;
+        if (entry.name != name) continue;
         if (entry.ambient) material.ambient = *entry.ambient;
         if (entry.diffuse) material.diffuse = *entry.diffuse;
         if (entry.specular) material.specular = *entry.specular;
@@ -400,173 +371,195 @@ Material makeMaterial(const tinyobj::material_t& parsed, const std::vector<MtlEn
     return material;
 }
 
-/// The identity of an OBJ face corner; corners with equal keys become one vertex.
-struct CornerKey {
-    int position, normal, uv;
-    bool operator==(const CornerKey& other) const {
-        return position == other.position && normal == other.normal && uv == other.uv;
-    }
+/// What the read of an OBJ file gathered.
+struct ObjData {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec2> uvs;
+    std::vector<glm::vec3> normals;    // unit length, or zero where the file's normal is (0, 0, 0)
+    std::vector<PartTriangles> parts;  // in the order the file first uses each material
+    std::vector<MtlEntry> materials;   // from every mtllib, in file order
+    int faces = 0;
+    int lines = 0;
 };
 
-struct CornerKeyHash {
-    std::size_t operator()(const CornerKey& key) const {
-        std::size_t hash = std::hash<int>()(key.position);
-        hash = hash * 1000003u ^ std::hash<int>()(key.normal);
-        return hash * 1000003u ^ std::hash<int>()(key.uv);
-    }
-};
+ObjData readObj(const std::string& text, const fs::path& path, const MtlReader& readMtl, std::ostream& warnings) {
+    const std::string file = path.string();
+    ObjData data;
+    std::set<std::string> loadedMtlFiles;  // each MTL file is read once
+    std::string material;                  // the current usemtl name; empty = none
+    std::map<std::string, std::size_t> partOf;
+    PartTriangles* part = nullptr;          // the part of `material`, made at its first face
+    std::vector<Corner> face;
+    float values[7];
 
-struct PartBuilder {
-    ModelPart part;
-    std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> vertexOf;
-};
-
-glm::vec3 position(const tinyobj::attrib_t& attrib, std::size_t index) {
-    return {attrib.vertices[3 * index], attrib.vertices[3 * index + 1], attrib.vertices[3 * index + 2]};
-}
-
-/// The normal the file gives a corner, normalized; nullopt when it gives none
-/// (or one of zero length).
-std::optional<glm::vec3> fileNormal(const tinyobj::attrib_t& attrib, int index) {
-    if (index < 0) return std::nullopt;
-    const glm::vec3 normal(attrib.normals[3 * std::size_t(index)], attrib.normals[3 * std::size_t(index) + 1],
-                           attrib.normals[3 * std::size_t(index) + 2]);
-    const float length = glm::length(normal);
-    if (!(length > 1e-20f)) return std::nullopt;
-    return normal / length;
+    forEachLine(checkedText(text, file), [&](int line, std::string_view raw, std::vector<std::string_view>& words) {
+        data.lines = line;
+        const std::string_view key = words[0];
+        if (key == "f") {
+            if (words.size() < 4) {
+                throw InputError(file, line,
+                                 "a face needs at least 3 corners, found " + std::to_string(words.size() - 1));
+            }
+            face.clear();
+            const int positions = static_cast<int>(data.positions.size()), uvs = static_cast<int>(data.uvs.size()),
+                      normals = static_cast<int>(data.normals.size());
+            for (std::size_t i = 1; i < words.size(); ++i) {
+                face.push_back(readCorner(words[i], positions, uvs, normals, file, line));
+            }
+            if (!part) {
+                const auto found = partOf.find(material);
+                if (found == partOf.end()) {
+                    partOf.emplace(material, data.parts.size());
+                    data.parts.push_back({material, {}});
+                    part = &data.parts.back();
+                } else {
+                    part = &data.parts[found->second];
+                }
+            }
+            triangulate(face, data.positions, part->corners, file, line);
+            ++data.faces;
+            return;
+        }
+        dropComment(words);
+        if (key == "v") {
+            // x y z, optionally w or a colour r g b.
+            numbers(words, 3, 7, "3 numbers (x y z)", file, line, values);
+            data.positions.emplace_back(values[0], values[1], values[2]);
+        } else if (key == "vt") {
+            const std::size_t count = numbers(words, 1, 3, "1 to 3 numbers (u v)", file, line, values);
+            data.uvs.emplace_back(values[0], count > 1 ? values[1] : 0.0f);
+        } else if (key == "vn") {
+            numbers(words, 3, 3, "3 numbers (x y z)", file, line, values);
+            // Divided by its largest component first, so that "vn 3e38 3e38 3e38"
+            // (whose length overflows a float) still gives a unit normal.
+            glm::vec3 normal(values[0], values[1], values[2]);
+            const float largest = std::max({std::abs(normal.x), std::abs(normal.y), std::abs(normal.z)});
+            data.normals.push_back(largest > 0.0f ? glm::normalize(normal / largest) : glm::vec3(0.0f));
+        } else if (key == "l" || key == "p") {
+            // Lines and points are not drawn, but their indices are checked like a face's.
+            for (std::size_t i = 1; i < words.size(); ++i) {
+                (void)readCorner(words[i], static_cast<int>(data.positions.size()), static_cast<int>(data.uvs.size()),
+                                 static_cast<int>(data.normals.size()), file, line);
+            }
+        } else if (key == "mtllib") {
+            if (words.size() < 2) throw InputError(file, line, "mtllib needs the name of an MTL file");
+            if (words.size() > 2) {
+                throw InputError(file, line, "mtllib names " + std::to_string(words.size() - 1) +
+                                                 " files; put each MTL file on an mtllib line of its own "
+                                                 "(file names cannot contain spaces)");
+            }
+            const std::string name(words[1]);
+            if (loadedMtlFiles.count(name)) return;
+            const fs::path mtlPath = path.parent_path() / name;
+            std::string mtlText;
+            try {
+                mtlText = readMtl(mtlPath);
+            } catch (const InputError& error) {
+                throw InputError(file, line, "mtllib names '" + excerpt(name) + "', but " +
+                                                 quoteInput(mtlPath.string(), 200) + ": " + error.message() +
+                                                 " (MTL files are looked for next to the OBJ file)");
+            }
+            loadedMtlFiles.insert(name);
+            for (MtlEntry& entry : scanMtl(mtlPath, mtlText, warnings)) data.materials.push_back(std::move(entry));
+        } else if (key == "usemtl") {
+            std::string name = restOfLine(raw, "usemtl");
+            if (name.empty()) throw InputError(file, line, "usemtl needs a material name");
+            bool defined = false;
+            for (const MtlEntry& entry : data.materials) defined = defined || entry.name == name;
+            if (!defined) {
+                const std::string reason = loadedMtlFiles.empty() ? "no mtllib line comes before it"
+                                                                  : "no MTL file named by an earlier mtllib defines it";
+                throw InputError(file, line, "usemtl names material '" + quoteInput(name) + "', but " + reason);
+            }
+            if (name != material) {
+                material = std::move(name);
+                part = nullptr;
+            }
+        }
+        // o, g, s, mg and statements Stoa does not use are skipped.
+    });
+    return data;
 }
 
 /// Smooth normals per OBJ position: the positions become the vertices of a
 /// mesh whose triangles are all the model's faces, so computeSmoothNormals
 /// averages across uv seams and material boundaries, where a surface is
 /// still the same surface.
-std::vector<glm::vec3> smoothNormalsByPosition(const tinyobj::attrib_t& attrib,
-                                               const std::vector<tinyobj::shape_t>& shapes) {
+std::vector<glm::vec3> smoothNormalsByPosition(const ObjData& data) {
     Mesh positions;
-    positions.vertices.resize(attrib.vertices.size() / 3);
-    for (std::size_t i = 0; i < positions.vertices.size(); ++i) {
-        positions.vertices[i].position = position(attrib, i);
-    }
-    for (const tinyobj::shape_t& shape : shapes) {
-        std::size_t offset = 0;
-        for (unsigned char cornerCount : shape.mesh.num_face_vertices) {
-            for (std::size_t k = 1; k + 1 < cornerCount; ++k) {  // a fan, should a face not be a triangle
-                for (std::size_t corner : {offset, offset + k, offset + k + 1}) {
-                    positions.indices.push_back(static_cast<std::uint32_t>(shape.mesh.indices[corner].vertex_index));
-                }
-            }
-            offset += cornerCount;
-        }
+    positions.vertices.resize(data.positions.size());
+    for (std::size_t i = 0; i < positions.vertices.size(); ++i) positions.vertices[i].position = data.positions[i];
+    for (const PartTriangles& part : data.parts) {
+        for (const Corner& corner : part.corners) positions.indices.push_back(static_cast<std::uint32_t>(corner.position));
     }
     computeSmoothNormals(positions);
     std::vector<glm::vec3> normals;
+    normals.reserve(positions.vertices.size());
     for (const Vertex& vertex : positions.vertices) normals.push_back(vertex.normal);
     return normals;
 }
 
-/// Gathers tinyobjloader's triangles into one part per material, in the order
-/// the file first uses each material.
-std::vector<ModelPart> buildParts(const tinyobj::ObjReader& reader, const std::vector<MtlEntry>& mtlEntries) {
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
-    const std::vector<tinyobj::shape_t>& shapes = reader.GetShapes();
-    const std::vector<tinyobj::material_t>& materials = reader.GetMaterials();
-
-    bool anyMissingNormal = false;
-    for (const tinyobj::shape_t& shape : shapes) {
-        for (const tinyobj::index_t& corner : shape.mesh.indices) {
-            anyMissingNormal = anyMissingNormal || !fileNormal(attrib, corner.normal_index);
-        }
-    }
-    const std::vector<glm::vec3> smoothNormals =
-        anyMissingNormal ? smoothNormalsByPosition(attrib, shapes) : std::vector<glm::vec3>();
-
-    std::vector<PartBuilder> builders;
-    std::map<int, std::size_t> builderOfMaterial;  // tinyobjloader material id (-1 = none) -> index in builders
-    auto builderFor = [&](int materialId) -> PartBuilder& {
-        if (materialId < 0 || materialId >= static_cast<int>(materials.size())) materialId = -1;
-        const auto found = builderOfMaterial.find(materialId);
-        if (found != builderOfMaterial.end()) return builders[found->second];
-        builderOfMaterial.emplace(materialId, builders.size());
-        builders.emplace_back();
-        if (materialId >= 0) {
-            builders.back().part.material = makeMaterial(materials[std::size_t(materialId)], mtlEntries);
-        }
-        return builders.back();
+Model buildModel(const ObjData& data, const std::string& file) {
+    auto hasNormal = [&](const Corner& corner) {
+        return corner.normal >= 0 && data.normals[std::size_t(corner.normal)] != glm::vec3(0.0f);
     };
+    bool anyMissingNormal = false;
+    for (const PartTriangles& part : data.parts) {
+        for (const Corner& corner : part.corners) anyMissingNormal = anyMissingNormal || !hasNormal(corner);
+    }
+    const std::vector<glm::vec3> smoothNormals = anyMissingNormal ? smoothNormalsByPosition(data) : std::vector<glm::vec3>();
 
-    for (const tinyobj::shape_t& shape : shapes) {
-        std::size_t offset = 0;
-        for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
-            const int materialId = face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
-            PartBuilder& builder = builderFor(materialId);
-            auto vertexFor = [&](const tinyobj::index_t& corner) {
-                const CornerKey key{corner.vertex_index, corner.normal_index, corner.texcoord_index};
-                const auto existing = builder.vertexOf.find(key);
-                if (existing != builder.vertexOf.end()) return existing->second;
-                Vertex vertex;
-                const std::size_t p = std::size_t(corner.vertex_index);
-                vertex.position = position(attrib, p);
-                const std::optional<glm::vec3> normal = fileNormal(attrib, corner.normal_index);
-                vertex.normal = normal ? *normal : smoothNormals[p];  // computed when any normal is missing
-                if (corner.texcoord_index >= 0) {
-                    const std::size_t t = std::size_t(corner.texcoord_index);
-                    vertex.uv = {attrib.texcoords[2 * t], attrib.texcoords[2 * t + 1]};
-                }
-                const auto index = static_cast<std::uint32_t>(builder.part.mesh.vertices.size());
-                builder.part.mesh.vertices.push_back(vertex);
-                builder.vertexOf.emplace(key, index);
-                return index;
-            };
-            const std::size_t cornerCount = shape.mesh.num_face_vertices[face];
-            for (std::size_t k = 1; k + 1 < cornerCount; ++k) {  // tinyobjloader gives triangles; a fan otherwise
-                for (std::size_t corner : {offset, offset + k, offset + k + 1}) {
-                    builder.part.mesh.indices.push_back(vertexFor(shape.mesh.indices[corner]));
-                }
+    Model model;
+    model.source = file;
+    for (const PartTriangles& triangles : data.parts) {
+        if (triangles.corners.empty()) continue;
+        ModelPart part;
+        part.material = makeMaterial(triangles.material, data.materials);
+        std::unordered_map<Corner, std::uint32_t, CornerHash> vertexOf;
+        part.mesh.indices.reserve(triangles.corners.size());
+        for (const Corner& corner : triangles.corners) {
+            const auto existing = vertexOf.find(corner);
+            if (existing != vertexOf.end()) {
+                part.mesh.indices.push_back(existing->second);
+                continue;
             }
-            offset += cornerCount;
+            Vertex vertex;
+            vertex.position = data.positions[std::size_t(corner.position)];
+            vertex.normal = hasNormal(corner) ? data.normals[std::size_t(corner.normal)]
+                                              : smoothNormals[std::size_t(corner.position)];
+            if (corner.uv >= 0) vertex.uv = data.uvs[std::size_t(corner.uv)];
+            const auto index = static_cast<std::uint32_t>(part.mesh.vertices.size());
+            part.mesh.vertices.push_back(vertex);
+            vertexOf.emplace(corner, index);
+            part.mesh.indices.push_back(index);
         }
+        model.parts.push_back(std::move(part));
     }
-
-    std::vector<ModelPart> parts;
-    for (PartBuilder& builder : builders) {
-        if (!builder.part.mesh.indices.empty()) parts.push_back(std::move(builder.part));
-    }
-    return parts;
+    return model;
 }
 
 } // namespace
 
-Model loadObj(const fs::path& path) {
+Model parseObj(const std::string& text, const fs::path& path, const MtlReader& readMtl, std::ostream& warnings) {
     const std::string file = path.string();
-    std::error_code error;
-    if (!fs::exists(path, error)) throw InputError(file, 0, "the file does not exist");
-    if (fs::is_directory(path, error)) throw InputError(file, 0, "this is a folder, not an OBJ file");
-    const std::optional<std::string> text = readText(path);
-    if (!text) throw InputError(file, 0, "the file cannot be read");
-
-    const ObjScan scan = scanObj(path, *text);
-    if (scan.faceCount == 0) throw InputError(file, 0, "the file has no faces (f lines), so there is nothing to draw");
-
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    config.mtl_search_path = path.parent_path().string();
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(file, config) || !reader.Error().empty()) throw tinyobjError(file, reader.Error());
-
-    // The scan saw every usemtl name defined; make sure tinyobjloader loaded it too.
-    for (const auto& [name, line] : scan.usedMaterials) {
-        bool loaded = false;
-        for (const tinyobj::material_t& material : reader.GetMaterials()) loaded = loaded || material.name == name;
-        if (!loaded) throw InputError(file, line, "material '" + name + "' could not be loaded from its MTL file");
+    const ObjData data = readObj(text, path, readMtl, warnings);
+    if (data.faces == 0) {
+        throw InputError(file, 0, "the file has no faces: none of its " + std::to_string(data.lines) +
+                                      " lines is an f line, so there is nothing to draw");
     }
-
-    Model model;
-    model.source = file;
-    model.parts = buildParts(reader, scan.materials);
-    if (model.parts.empty()) throw InputError(file, 0, "tinyobjloader found no faces in the file");
+    Model model = buildModel(data, file);
     for (const ModelPart& part : model.parts) part.mesh.validate(file);
     return model;
 }
+
+Model loadObj(const fs::path& path, std::ostream& warnings) {
+    const std::string text = readInputFile(path, maxObjFileBytes, "an OBJ file");
+    const MtlReader readMtl = [](const fs::path& mtlPath) {
+        return readInputFile(mtlPath, maxMtlFileBytes, "an MTL file");
+    };
+    return parseObj(text, path, readMtl, warnings);
+}
+
+Model loadObj(const fs::path& path) { return loadObj(path, std::cerr); }
 
 } // namespace stoa

@@ -2,6 +2,9 @@
 
 #include <stoa/core/Assert.hpp>
 #include <stoa/core/InputError.hpp>
+#include <stoa/core/InputFile.hpp>
+
+#include "ImageFile.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -29,88 +32,6 @@ std::uint8_t luma(std::uint8_t r, std::uint8_t g, std::uint8_t b) {
     return static_cast<std::uint8_t>((y + 32768u) >> 16);
 }
 
-struct FileCloser {
-    void operator()(std::FILE* file) const { std::fclose(file); }
-};
-
-// stb_image reads past the end of a truncated BMP, TGA or PGM/PPM as zeros
-// and reports success (PNG and JPG it does catch). completeSize() works out,
-// from the header, how many bytes the file needs for the pixels stb decoded,
-// so that load() can reject a file that is shorter: 0 when the format is
-// another one or its size cannot be known in advance (compressed BMP).
-
-std::uint32_t littleEndian(const std::vector<std::uint8_t>& bytes, std::size_t at, int size) {
-    std::uint32_t value = 0;
-    for (int i = size - 1; i >= 0; --i) value = (value << 8) | bytes[at + static_cast<std::size_t>(i)];
-    return value;
-}
-
-std::size_t bmpSize(const std::vector<std::uint8_t>& bytes, int width, int height) {
-    if (bytes.size() < 34) return 0;
-    const std::uint32_t dataOffset = littleEndian(bytes, 10, 4);
-    const std::uint32_t bitsPerPixel = littleEndian(bytes, 28, 2);
-    const std::uint32_t compression = littleEndian(bytes, 30, 4);
-    if (compression != 0 && compression != 3) return 0;  // RLE: the size depends on the data
-    const std::size_t rowBytes = (static_cast<std::size_t>(width) * bitsPerPixel + 31) / 32 * 4;
-    return dataOffset + rowBytes * static_cast<std::size_t>(height);
-}
-
-/// TGA has no signature; the header is believed when its size matches the decoded one.
-std::size_t tgaSize(const std::vector<std::uint8_t>& bytes, int width, int height) {
-    if (bytes.size() < 18) return 0;
-    const std::uint8_t imageType = bytes[2];
-    const bool rle = imageType >= 9 && imageType <= 11;
-    if (!rle && (imageType < 1 || imageType > 3)) return 0;
-    if (static_cast<int>(littleEndian(bytes, 12, 2)) != width || static_cast<int>(littleEndian(bytes, 14, 2)) != height)
-        return 0;
-    const std::size_t colourMapBytes = bytes[1] == 1 ? littleEndian(bytes, 5, 2) * ((bytes[7] + 7u) / 8u) : 0;
-    const std::size_t pixelBytes = (bytes[16] + 7u) / 8u;
-    std::size_t at = 18 + bytes[0] + colourMapBytes;
-    const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    if (!rle) return at + pixels * pixelBytes;
-    // Walk the run-length packets: a header byte, then one pixel (a run) or n raw pixels.
-    for (std::size_t done = 0; done < pixels;) {
-        if (at >= bytes.size()) return at + 1;  // the next packet header is missing
-        const std::uint8_t header = bytes[at++];
-        const std::size_t count = (header & 0x7fu) + 1u;
-        at += (header & 0x80u) ? pixelBytes : count * pixelBytes;
-        done += count;
-    }
-    return at;
-}
-
-/// Binary PGM (P5) and PPM (P6): the header is four tokens, comments allowed,
-/// then one whitespace byte before the samples (2 bytes each when maxval > 255).
-std::size_t pnmSize(const std::vector<std::uint8_t>& bytes, int width, int height, int channels) {
-    std::size_t at = 2;
-    unsigned long maxValue = 0;
-    for (int token = 0; token < 3; ++token) {
-        while (at < bytes.size() && (std::isspace(bytes[at]) || bytes[at] == '#')) {
-            if (bytes[at] == '#') {
-                while (at < bytes.size() && bytes[at] != '\n') ++at;
-            } else {
-                ++at;
-            }
-        }
-        unsigned long value = 0;
-        while (at < bytes.size() && std::isdigit(bytes[at])) value = value * 10 + (bytes[at++] - '0');
-        if (token == 2) maxValue = value;
-    }
-    const std::size_t sampleBytes = maxValue > 255 ? 2 : 1;
-    return at + 1 + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
-                        static_cast<std::size_t>(channels) * sampleBytes;
-}
-
-std::size_t completeSize(const std::vector<std::uint8_t>& bytes, int width, int height, int channels) {
-    if (bytes.size() >= 2 && bytes[0] == 'B' && bytes[1] == 'M') return bmpSize(bytes, width, height);
-    if (bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '5' || bytes[1] == '6'))
-        return pnmSize(bytes, width, height, channels);
-    const bool png = bytes.size() >= 4 && bytes[0] == 0x89 && bytes[1] == 'P';
-    const bool jpg = bytes.size() >= 2 && bytes[0] == 0xff && bytes[1] == 0xd8;
-    if (png || jpg) return 0;  // stb_image checks these itself
-    return tgaSize(bytes, width, height);
-}
-
 } // namespace
 
 Image::Image(int width, int height, int channels)
@@ -127,48 +48,53 @@ Image::Image(int width, int height, int channels)
 Image Image::load(const std::filesystem::path& path, int desiredChannels) {
     STOA_ASSERT(desiredChannels >= 0 && desiredChannels <= 4,
                 "Image::load(): desiredChannels must be 0 (the file's own) or 1..4.");
-    const std::string name = path.string();
-    // stb_image opens the file itself and reports a missing file and a folder
-    // alike as "can't fopen"; look first, so the message says which it is.
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error))
-        throw InputError(name, 0, "cannot open file: it is a folder, not an image");
-    std::vector<std::uint8_t> bytes;
-    {
-        std::unique_ptr<std::FILE, FileCloser> file(std::fopen(name.c_str(), "rb"));
-        if (!file) throw InputError(name, 0, "cannot open file");
-        std::uint8_t buffer[1 << 16];
-        for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, file.get())) > 0;)
-            bytes.insert(bytes.end(), buffer, buffer + got);
-        if (std::ferror(file.get())) throw InputError(name, 0, "cannot read file");
-    }
+    const std::string bytes = readInputFile(path, maxFileBytes, "an image file");
+    return decode(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), path.string(), desiredChannels);
+}
 
-    // Decode with the file's own channels and convert here, so that load(path, 1)
-    // gives the same grey as converted(1) (stb_image would use Rec. 601 weights).
-    int width = 0, height = 0, fileChannels = 0;
-    stbi_uc* decoded = bytes.empty() ? nullptr
-                                     : stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width,
-                                                             &height, &fileChannels, 0);
-    if (!decoded) {
-        const char* reason = bytes.empty() ? "the file is empty" : stbi_failure_reason();
-        throw InputError(name, 0, std::string("not a PNG, BMP, PGM/PPM, TGA or JPG image (stb_image: ") +
-                                      (reason ? reason : "unknown error") + ")");
+Image Image::decode(const std::uint8_t* bytes, std::size_t size, const std::string& name, int desiredChannels) {
+    STOA_ASSERT(desiredChannels >= 0 && desiredChannels <= 4,
+                "Image::decode(): desiredChannels must be 0 (the file's own) or 1..4.");
+    if (size > maxFileBytes) {
+        throw InputError(name, 0, "the image is too large: " + std::to_string(size) + " bytes, past the limit of " +
+                                      std::to_string(maxFileBytes) + " bytes");
     }
-    std::unique_ptr<stbi_uc, void (*)(void*)> owner(decoded, stbi_image_free);
-    const std::size_t needed = completeSize(bytes, width, height, fileChannels);
-    if (needed > bytes.size()) {
-        throw InputError(name, 0, "the file is truncated: its header promises " + std::to_string(width) + "x" +
-                                      std::to_string(height) + " pixels, which need " + std::to_string(needed) +
-                                      " bytes, but it has " + std::to_string(bytes.size()));
-    }
+    // Sizes and structure first: stb_image sees only files whose header is
+    // within the limits and whose data can hold the pixels it promises.
+    const detail::ImageFileHeader header = detail::checkImageFile(bytes, size, name);
+    if (header.format == detail::ImageFormat::Jpg) detail::checkJpegData(bytes, size, name);
 
     Image image;
-    image.m_width = width;
-    image.m_height = height;
-    image.m_channels = fileChannels;
-    image.m_pixels.assign(decoded, decoded + static_cast<std::size_t>(width) * height * fileChannels);
-    if (desiredChannels != 0 && desiredChannels != fileChannels) return image.converted(desiredChannels);
+    if (header.format == detail::ImageFormat::Pnm) {
+        image = detail::decodePnm(bytes, size, name);
+    } else {
+        // Decode with the file's own channels and convert here, so that load(path, 1)
+        // gives the same grey as converted(1) (stb_image would use Rec. 601 weights).
+        int width = 0, height = 0, fileChannels = 0;
+        stbi_uc* decoded =
+            stbi_load_from_memory(bytes, static_cast<int>(size), &width, &height, &fileChannels, 0);
+        if (!decoded) {
+            const char* reason = stbi_failure_reason();
+            throw InputError(name, 0, std::string("the image data is damaged (stb_image: ") +
+                                          (reason && *reason ? reason : "no reason given") + ")");
+        }
+        std::unique_ptr<stbi_uc, void (*)(void*)> owner(decoded, stbi_image_free);
+        if (width != header.width || height != header.height || fileChannels < 1 || fileChannels > 4) {
+            throw InputError(name, 0, "the image decoded to " + std::to_string(width) + "x" + std::to_string(height) +
+                                          " pixels, but its header promises " + std::to_string(header.width) +
+                                          "x" + std::to_string(header.height));
+        }
+        image.m_width = width;
+        image.m_height = height;
+        image.m_channels = fileChannels;
+        image.m_pixels.assign(decoded, decoded + static_cast<std::size_t>(width) * height * fileChannels);
+    }
+    if (desiredChannels != 0 && desiredChannels != image.m_channels) return image.converted(desiredChannels);
     return image;
+}
+
+int Image::bitsPerChannel(const std::uint8_t* bytes, std::size_t size, const std::string& name) {
+    return detail::checkImageFile(bytes, size, name).bitsPerChannel;
 }
 
 void Image::savePng(const std::filesystem::path& path) const {

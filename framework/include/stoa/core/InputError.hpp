@@ -2,7 +2,10 @@
 // The one exception type for bad input at a load boundary: a model, an image,
 // a shader, a case manifest, a command-line flag. It names the file and the
 // line (0 when the problem concerns the whole file) and says what was expected.
-// Programs catch it once, at the top, and print what() plainly.
+// Programs catch it once, at the top, and print what() plainly. what() is
+// safe to print whatever bytes the input held: control bytes (NUL included)
+// and bytes that are not valid UTF-8 appear as \xNN; file(), line() and
+// message() return what was given.
 
 #include <stdexcept>
 #include <string>

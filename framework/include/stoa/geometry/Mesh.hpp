@@ -53,7 +53,9 @@ public:
 /// that vertex, so that larger triangles weigh more ("area-weighted" smooth
 /// normals). Vertices only share a normal when they share an index: a seam
 /// that duplicates vertices (for different uvs) stays visible. A vertex that
-/// no triangle of non-zero area uses gets the normal +Y.
+/// no triangle of non-zero area uses gets the normal +Y. Triangles too large
+/// or too small for a float cross product are summed in double, so a huge
+/// triangle still gets its true normal.
 void computeSmoothNormals(Mesh& mesh);
 
 /// Lab 04 (labs/04_normal_mapping/tangents.cpp; docs/labs/04_normal_mapping.md):

@@ -9,12 +9,17 @@
 #include <stoa/image/Image.hpp>
 
 #include <filesystem>
+#include <cstddef>
+#include <cstdint>
 #include <iosfwd>
+#include <string>
 
 namespace stoa {
 
 /// Loads a height map from a PGM (P2/P5), PNG, BMP, TGA or JPG file and returns
-/// it as a 1-channel Image. What the file holds decides what happens:
+/// it as a 1-channel Image, with Image::load()'s checks and limits (a regular
+/// file only, at most Image::maxFileBytes read, Image::maxSide pixels per side,
+/// Image::maxPixels in all). What the file holds decides what happens:
 ///   - 8-bit grey: returned as it is;
 ///   - 8-bit grey + alpha, RGB or RGBA: the documented fallback. The height is
 ///     the colour's luminance (Rec. 709 weights, alpha ignored) and one line
@@ -22,8 +27,13 @@ namespace stoa {
 ///     more often the wrong file (the diffuse map) than a height map;
 ///   - 16 bits per channel: InputError naming the file (Stoa's height maps are
 ///     8-bit; rescaling silently would change the bump strength);
-///   - missing, a folder, or not an image: InputError naming the file.
+///   - missing, a folder, a FIFO or device, a symbolic link loop, a name too
+///     long, not an image, damaged or truncated: InputError naming the file
+///     and the cause (never std::filesystem::filesystem_error).
 Image loadHeightMap(const std::filesystem::path& path, std::ostream& warnings);
+/// The same for a file already in memory; `name` is the file named in errors.
+/// For tests and fuzzers.
+Image decodeHeightMap(const std::uint8_t* bytes, std::size_t size, const std::string& name, std::ostream& warnings);
 /// The same, warnings on std::cerr.
 Image loadHeightMap(const std::filesystem::path& path);
 

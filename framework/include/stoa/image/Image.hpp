@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -16,12 +17,37 @@ public:
     /// A black image (alpha 255 where there is alpha). 0 < channels <= 4.
     Image(int width, int height, int channels = 4);
 
-    /// Loads PNG, BMP, PGM/PPM, TGA or JPG through stb_image. `desiredChannels`
-    /// 0 keeps the file's own count; 1..4 converts. Throws InputError naming the
-    /// file and stb's reason when the file is missing or does not decode, and
-    /// when an uncompressed BMP, a TGA or a binary PGM/PPM is shorter than its
-    /// header promises (stb_image would fill the missing pixels with zeros).
+    /// Limits every image file must keep (Image::load, decode, loadHeightMap).
+    /// A decoded image takes at most maxPixels * 4 bytes (1 GiB); stb_image
+    /// briefly needs about as much again while it converts. A file under
+    /// 1 MB decodes to far less: its pixels must fit in the file (BMP, TGA,
+    /// PGM/PPM), in deflate's best ratio of 1032:1 (PNG), or in the Huffman
+    /// codes the file really holds (JPG).
+    static constexpr int maxSide = 16384;                      // pixels per side
+    static constexpr long long maxPixels = 256LL << 20;        // 256 megapixels (2^28 pixels)
+    static constexpr std::size_t maxFileBytes = 256u << 20;    // 256 MiB read at most
+
+    /// Loads PNG, JPG (baseline and progressive), BMP (Windows and OS/2,
+    /// uncompressed), TGA, or PGM/PPM (ASCII P2/P3 and binary P5/P6, samples
+    /// scaled from 0..maxval to 0..255); 16-bit PNGs and PNMs are read to 8
+    /// bits. `desiredChannels` 0 keeps the file's own count; 1..4 converts.
+    /// Only a regular file is opened (never a FIFO, a device or a folder),
+    /// and at most maxFileBytes are read. Every check happens before
+    /// stb_image decodes: the format from the file's first bytes (not its
+    /// name: a GIF named .png is refused as a GIF), a size within maxSide and
+    /// maxPixels, and data that holds every pixel the header promises (a
+    /// truncated or size-patched file is an error, never zero-filled
+    /// pixels). Throws InputError naming the file and the cause.
     static Image load(const std::filesystem::path& path, int desiredChannels = 0);
+
+    /// The same for a file already in memory (what load() does after reading
+    /// it); `name` is the file named in errors. For tests and fuzzers.
+    static Image decode(const std::uint8_t* bytes, std::size_t size, const std::string& name,
+                        int desiredChannels = 0);
+
+    /// 8, or 16 for a 16-bit PNG or a PNM with maxval > 255, after the same
+    /// header checks as decode() (which throw InputError).
+    static int bitsPerChannel(const std::uint8_t* bytes, std::size_t size, const std::string& name);
 
     /// Writes a PNG. Throws InputError when the file cannot be written.
     void savePng(const std::filesystem::path& path) const;

@@ -1,0 +1,25 @@
+#pragma once
+// The entry points the libFuzzer harnesses (fuzz_*.cpp, built by
+// build-fuzzers.sh with clang) and the regression replay (replay.cpp, built
+// by CMake and run by CTest) feed bytes to. Each returns true when the loader
+// accepted the input and false when it threw InputError; anything else (a
+// crash, another exception, a sanitizer report) is a finding.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace stoa::fuzz {
+
+/// OBJ text; everything after the first line "#@mtl" is the text of every MTL
+/// file an mtllib line names (the line itself is an OBJ comment).
+bool obj(const std::uint8_t* data, std::size_t size);
+/// Any image file (PNG, JPG, BMP, TGA, PGM/PPM, or anything else).
+bool image(const std::uint8_t* data, std::size_t size);
+/// The same bytes as a height map.
+bool heightMap(const std::uint8_t* data, std::size_t size);
+
+/// The separator line of obj() inputs.
+inline const std::string mtlSeparator = "\n#@mtl\n";
+
+} // namespace stoa::fuzz

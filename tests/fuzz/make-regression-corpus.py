@@ -1,0 +1,273 @@
+#!/usr/bin/env python3
+"""Writes the fuzzers' seed corpus and the regression corpus of the loaders.
+
+    tests/fuzz/make-regression-corpus.py OUT_DIR
+
+OUT_DIR/seeds/{obj,image}/       small valid files the fuzzers start from
+OUT_DIR/regression/{obj,image}/  every input that ever broke a loader (issue 14's
+                                 cases first), generated here rather than committed
+
+A regression file's name says what the loaders must do with it: "ok-..." must
+load, "err-..." must be refused with an InputError. The image files go to
+both the image and the height-map entry points (a height map may refuse an
+image that loads, e.g. a 16-bit one, so only "err-" binds it). OBJ inputs carry
+their MTL text after a line "#@mtl" (see FuzzTargets.hpp). Findings of later
+fuzzing runs are added to the list at the end of this file, or, when small,
+copied to tests/fuzz/findings/{obj,image}/, which the replay also reads.
+"""
+import math
+import os
+import struct
+import sys
+import zlib
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+MTL = "\n#@mtl\n"
+
+
+def png(width, height, colour_type=2, depth=8, rows=None, cut=None, chunks_after=b""):
+    channels = {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}[colour_type]
+    row_bytes = (width * channels * depth + 7) // 8
+    if rows is None:
+        rows = b"".join(b"\0" + bytes((x * 7 + y * 13) & 255 for x in range(row_bytes)) for y in range(height))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+
+    ihdr = struct.pack(">IIBBBBB", width, height, depth, colour_type, 0, 0, 0)
+    data = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr)
+    if colour_type == 3:
+        data += chunk(b"PLTE", bytes(range(48)))
+    data += chunk(b"IDAT", zlib.compress(rows)) + chunks_after + chunk(b"IEND", b"")
+    return data[:cut] if cut else data
+
+
+def bmp(width, height, bits=24, pixels=None, header_only=False):
+    row = (width * bits + 31) // 32 * 4
+    palette = b"".join(bytes((i, 255 - i, i // 2, 0)) for i in range(256)) if bits == 8 else b""
+    offset = 54 + len(palette)
+    if header_only:
+        pixels, palette = b"", b""
+    elif pixels is None:
+        pixels = b"".join(bytes((x * 5 + y * 11) & 255 for x in range(row)) for y in range(abs(height)))
+    file_size = offset + len(pixels)
+    return (b"BM" + struct.pack("<IHHI", file_size, 0, 0, offset) +
+            struct.pack("<IiiHHIIiiII", 40, width, height, 1, bits, 0, len(pixels), 2835, 2835, 0, 0) + palette + pixels)
+
+
+def bmp_os2(width, height):
+    """An OS/2 1.x BMP: a 12-byte info header with 16-bit sizes, 24 bits per pixel, varied pixels."""
+    row = (width * 24 + 31) // 32 * 4
+    pixels = b"".join(bytes((x * 29 + y * 53 + 7) & 255 for x in range(row)) for y in range(height))
+    offset = 14 + 12
+    return b"BM" + struct.pack("<IHHI", offset + len(pixels), 0, 0, offset) + struct.pack("<IHHHH", 12, width, height, 1, 24) + pixels
+
+
+def tga(width, height, image_type=2, bits=24, pixels=None):
+    header = struct.pack("<BBBHHBHHHHBB", 0, 0, image_type, 0, 0, 0, 0, 0, width, height, bits, 0)
+    if pixels is None:
+        pixels = bytes((i * 3) & 255 for i in range(width * height * bits // 8))
+    return header + pixels
+
+
+def pnm(header, samples=b""):
+    return header.encode() + samples
+
+
+def jpeg_frame_offset(data):
+    at = 2
+    while at + 4 <= len(data):
+        marker = data[at + 1]
+        length = struct.unpack(">H", data[at + 2:at + 4])[0]
+        if marker in (0xC0, 0xC1, 0xC2):
+            return at
+        at += 2 + length
+    raise ValueError("no SOF")
+
+
+def jpeg_resized(data, width, height):
+    at = jpeg_frame_offset(data)
+    return data[:at + 5] + struct.pack(">HH", height, width) + data[at + 9:]
+
+
+def jpeg_size(data):
+    at = jpeg_frame_offset(data)
+    height, width = struct.unpack(">HH", data[at + 5:at + 9])
+    return width, height
+
+
+def jpeg_scan_repeats_component():
+    """The seed rgb16.jpg with its scan's three components all renamed to component 1."""
+    data = bytearray(open(os.path.join(HERE, "seeds", "rgb16.jpg"), "rb").read())
+    at = data.index(b"\xff\xda")
+    for i in range(3):
+        data[at + 5 + 2 * i] = 1
+    return bytes(data)
+
+
+def obj_polygon(corners, star=False, normals=False, turns=1, digits=7):
+    lines = []
+    for i in range(corners):
+        angle = 2 * math.pi * turns * i / corners
+        radius = (1.0 if i % 2 == 0 else 0.5) if star else 1.0
+        lines.append("v %.*f %.*f 0" % (digits, radius * math.cos(angle), digits, radius * math.sin(angle)))
+    if normals:
+        lines.append("vn 0 0 1")
+    lines.append("f " + " ".join(("%d//1" % (i + 1)) if normals else str(i + 1) for i in range(corners)))
+    return "\n".join(lines) + "\n"
+
+
+TRIANGLE = "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
+
+
+def seeds():
+    jpg = {name: open(os.path.join(HERE, "seeds", name), "rb").read() for name in ("rgb16.jpg", "grey8.jpg")}
+    images = {
+        "rgb.png": png(5, 4), "grey.png": png(4, 3, 0), "rgba.png": png(3, 3, 6), "palette.png": png(4, 2, 3),
+        "grey16.png": png(2, 2, 0, 16), "grey-alpha.png": png(2, 3, 4),
+        "rgb.bmp": bmp(5, 3), "topdown.bmp": bmp(3, -2), "rgba.bmp": bmp(2, 2, 32), "palette.bmp": bmp(4, 2, 8),
+        "os2.bmp": bmp_os2(3, 2),
+        "rgb.tga": tga(3, 2), "grey.tga": tga(4, 2, 3, 8), "rgba.tga": tga(2, 2, 2, 32),
+        "rle.tga": tga(4, 1, 10, 24, bytes((0x83, 1, 2, 3))),
+        "p5.pgm": pnm("P5\n3 2\n255\n", bytes(range(6))), "p6.ppm": pnm("P6 2 1 255\n", bytes(range(6))),
+        "p2.pgm": pnm("P2\n# ascii\n3 2\n15\n0 5 10\n15 3 1\n"), "p3.ppm": pnm("P3 2 1 255\n255 0 0 0 255 0\n"),
+        "p5-16.pgm": pnm("P5 2 1 65535\n", b"\x12\x34\xff\xff"),
+    }
+    images.update(jpg)
+    objs = {
+        "triangle.obj": TRIANGLE + "vn 0 0 1\nvt 0 0\nf 1/1/1 2/1/1 3/1/1\n",
+        "quad.obj": "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 1\nf 1/1 2/2 3/1 4/2\n",
+        "negative.obj": TRIANGLE + "f -3 -2 -1\n",
+        "ell.obj": "v 2 0 0\nv 2 0 -1\nv 1 0 -1\nv 1 0 -2\nv 0 0 -2\nv 0 0 0\nvn 0 1 0\nf 1//1 2//1 3//1 4//1 5//1 6//1\n",
+        "hexagon.obj": obj_polygon(6),
+        "materials.obj": "mtllib m.mtl\n" + TRIANGLE + "usemtl red\nf 1 2 3\nusemtl old wood\nf 3 2 1\n" + MTL +
+                         "newmtl red\nKa 0.1 0 0\nKd 1 0 0\nKs 0.5\nNs 20\nd 1\nillum 2\nnewmtl old wood\nKd 0.4 0.3 0.2\n",
+        "groups.obj": "o thing\ng part\ns 1\n" + TRIANGLE + "vt 0 0\nvt 1 0\nf 1/1 2/2 3/1\nl 1 2\np 3\n",
+    }
+    return objs, images
+
+
+def regression():
+    floor = open(os.path.join(ROOT, "assets", "acropolis", "floor_diffuse.jpg"), "rb").read()
+    width, height = jpeg_size(floor)
+    images = {
+        # Hangs and memory blow-ups
+        "err-jpg-sof0-20000x20000.jpg": jpeg_resized(floor, 20000, 20000),
+        "err-bmp-54-byte-header-20000x20000.bmp": bmp(20000, 20000, header_only=True),
+        "err-bmp-54-byte-header-16000x16000.bmp": bmp(16000, 16000, header_only=True),
+        "err-tga-header-only-16000x16000.tga": tga(16000, 16000, pixels=b""),
+        "err-tga-rle-16000x16000-one-packet.tga": tga(16000, 16000, 10, 24, b"\xff\1\2\3"),
+        "err-png-ihdr-16000x16000-tiny-idat.png": png(16000, 16000, rows=b"\0" * 100),
+        "err-png-ihdr-20000x20000.png": png(20000, 20000, rows=b"\0"),
+        # Garbage accepted
+        "err-jpg-size-patched-up.jpg": jpeg_resized(floor, width, height * 2),
+        "err-jpg-width-patched-up.jpg": jpeg_resized(floor, width + 64, height),
+        "err-jpg-truncated-half.jpg": floor[:len(floor) // 2],
+        "err-jpg-truncated-no-eoi.jpg": floor[:-2],
+        "err-pgm-negative-size.pgm": pnm("P5\n-4 4\n255\n", bytes(16)),
+        "err-pgm-zero-size.pgm": pnm("P5\n0 0\n255\n"),
+        "err-pgm-width-4294967297.pgm": pnm("P5\n4294967297 1\n255\n", bytes(1)),
+        "err-pgm-maxval-0.pgm": pnm("P5\n2 2\n0\n", bytes(4)),
+        "err-pgm-maxval-past-int.pgm": pnm("P5\n2 2\n99999999999999999999\n", bytes(4)),
+        "err-pgm-width-past-int.pgm": pnm("P5\n99999999999999999999 2\n255\n", bytes(4)),
+        "err-ppm-maxval-65536.ppm": pnm("P6 1 1 65536\n", bytes(6)),
+        "err-pgm-truncated.pgm": pnm("P5 4 4 255\n", bytes(10)),
+        "err-p2-truncated.pgm": pnm("P2 3 3 255\n1 2 3 4\n"),
+        "err-p2-sample-past-maxval.pgm": pnm("P2 2 1 15\n3 16\n"),
+        # Valid files refused
+        "ok-bmp-os2-12-byte-header-varied.bmp": bmp_os2(7, 5),
+        "ok-pgm-ascii-p2.pgm": pnm("P2\n# a comment\n4 2\n255\n0 64 128 255\n255 128 64 0\n"),
+        "ok-ppm-ascii-p3.ppm": pnm("P3\n2 2\n255\n255 0 0  0 255 0\n0 0 255  255 255 255\n"),
+        # Wrong or unclear messages
+        "err-png-truncated.png": png(64, 64, 6)[:80],
+        "err-png-truncated-in-idat.png": png(64, 64, 6)[:-30],
+        "err-png-no-iend.png": png(8, 8)[:-12],
+        "err-gif-named-png.png": b"GIF89a\x01\x00\x01\x00\x80\x00\x00\x00\x00\x00\xff\xff\xff!\xf9\x04\x01\x00\x00\x00\x00,"
+                                 b"\x00\x00\x00\x00\x01\x00\x01\x00\x00\x02\x02D\x01\x00;",
+        "err-empty.png": b"",
+        "err-text.png": b"this is text, not pixels\n",
+        # UBSan inside stb_image
+        "err-bmp-height-int-min.bmp": bmp(2, -2147483648, header_only=True),
+        "err-bmp-width-int-min.bmp": bmp(-2147483648, 2, header_only=True),
+        "err-bmp-truncated.bmp": bmp(40, 40)[:300],
+        "err-bmp-rle8.bmp": bmp(4, 4, 8)[:30] + struct.pack("<I", 1) + bmp(4, 4, 8)[34:],
+        "err-tga-truncated.tga": tga(16, 16)[:100],
+        "err-jpg-arithmetic.jpg": floor[:jpeg_frame_offset(floor) + 1] + b"\xc9" + floor[jpeg_frame_offset(floor) + 2:],
+        "ok-jpg-floor.jpg": floor,
+        # Found by fuzz-heightmap (issue 14's 10-minute run): a scan that names component 1 three
+        # times with different AC tables; stb_image keeps the last choice for all three, read past
+        # the data and shifted by 32 (UBSan, stb_image.h:2065).
+        "err-jpg-scan-names-a-component-three-times.jpg": jpeg_scan_repeats_component(),
+    }
+    huge_convex = obj_polygon(100000)
+    objs = {
+        # Hangs: a face with 100,000 corners
+        "ok-convex-100000-corners.obj": huge_convex,
+        "ok-convex-100000-corners-with-normals.obj": obj_polygon(100000, normals=True),
+        "err-star-100000-corners.obj": obj_polygon(100000, star=True),
+        "ok-star-64-corners.obj": obj_polygon(64, star=True),
+        "ok-convex-40000-corners-4-decimals.obj": obj_polygon(40000, digits=4),
+        "err-winds-twice-1000-corners.obj": obj_polygon(1000, turns=2),
+        "ok-winds-twice-60-corners.obj": obj_polygon(60, turns=2),
+        "err-star-66-corners.obj": obj_polygon(66, star=True),
+        # tinyobjloader's `t` tag allocated what its counts asked for.
+        "ok-t-tag-huge-counts.obj": TRIANGLE + "t crease 2000000000/2000000000/0\nf 1 2 3\n",
+        # Garbage accepted
+        "ok-vn-3e38.obj": TRIANGLE + "vn 3e38 3e38 3e38\nf 1//1 2//1 3//1\n",
+        "ok-vn-zero.obj": TRIANGLE + "vn 0 0 0\nf 1//1 2//1 3//1\n",
+        "ok-huge-triangle-no-normals.obj": "v -3e38 -3e38 0\nv 3e38 -3e38 0\nv 0 3e38 0\nf 1 2 3\n",
+        "ok-tiny-triangle-no-normals.obj": "v 0 0 0\nv 1e-30 0 0\nv 0 1e-30 0\nf 1 2 3\n",
+        "err-face-repeats-corners.obj": TRIANGLE + "f 1 2 3\nf 1 2 3 1 2 3\n",
+        "err-quad-repeats-a-corner.obj": TRIANGLE + "f 1 2 3 1\n",
+        "ok-material-values-out-of-range.obj": "mtllib m.mtl\n" + TRIANGLE + "usemtl m\nf 1 2 3\n" + MTL +
+                                               "newmtl m\nKd 5 -3 1e30\nKa -1\nKs 2 2 2\nNs -50\n",
+        # Valid files refused
+        "ok-utf8-bom.obj": "\ufeff" + TRIANGLE + "f 1 2 3\n",
+        "ok-cr-only.obj": (TRIANGLE + "f 1 2 3\n").replace("\n", "\r"),
+        "ok-crlf.obj": (TRIANGLE + "f 1 2 3\n").replace("\n", "\r\n"),
+        "ok-usemtl-with-spaces.obj": "mtllib m.mtl\n" + TRIANGLE + "usemtl old  wood\nf 1 2 3\n" + MTL +
+                                     "newmtl old  wood\nKd 0.5 0.4 0.3\n",
+        # Wrong or unclear messages
+        "err-utf16-le.obj": (TRIANGLE + "f 1 2 3\n").encode("utf-16"),
+        "err-utf16-be-no-mark.obj": (TRIANGLE + "f 1 2 3\n").encode("utf-16-be"),
+        "err-usemtl-undefined-with-spaces.obj": "mtllib m.mtl\n" + TRIANGLE + "usemtl old wood\nf 1 2 3\n" + MTL +
+                                                "newmtl old\n",
+        "err-index-99999999999.obj": TRIANGLE + "f 1 2 99999999999\n",
+        "err-index-past-long-long.obj": TRIANGLE + "f 1 2 999999999999999999999999999\n",
+        "err-index-negative-huge.obj": TRIANGLE + "f 1 2 -99999999999\n",
+        "err-nul-byte.obj": "v 0 0 0\nv 1 0\0 0\nv 0 1 0\nf 1 2 3\n",
+        "err-no-faces.obj": TRIANGLE,
+        "err-empty.obj": "",
+        "err-binary.obj": bytes(range(256)) * 4,
+        "err-long-word.obj": "v " + "1" * 100000 + "x 0 0\n",
+        "err-mtl-binary.obj": "mtllib m.mtl\n" + TRIANGLE + "f 1 2 3\n" + MTL + "newmtl a\nKd \x00\xff\x1b[31m\n",
+    }
+    return objs, images
+
+
+def write(folder, files):
+    os.makedirs(folder, exist_ok=True)
+    for name, data in files.items():
+        if isinstance(data, str):
+            data = data.encode("utf-8")
+        with open(os.path.join(folder, name), "wb") as out:
+            out.write(data)
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out = sys.argv[1]
+    objs, images = seeds()
+    write(os.path.join(out, "seeds", "obj"), objs)
+    write(os.path.join(out, "seeds", "image"), images)
+    objs, images = regression()
+    write(os.path.join(out, "regression", "obj"), objs)
+    write(os.path.join(out, "regression", "image"), images)
+    count = sum(len(files) for files in (objs, images))
+    print("wrote %d regression files and the seeds to %s" % (count, out))
+
+
+if __name__ == "__main__":
+    main()
