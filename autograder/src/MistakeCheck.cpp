@@ -27,10 +27,9 @@ std::string padded(const std::string& text, std::size_t width) {
     return text.size() >= width ? text : text + std::string(width - text.size(), ' ');
 }
 
-} // namespace
-
-MistakeVerdict judgeOutOfGallery(const MistakeFile& mistake, const std::vector<GradeResult>& results) {
-    std::vector<std::string> problems, wrong, right;
+// Each case of the mistake's fails: line that was not graded, or did not fail, with why.
+std::vector<std::string> notFailedAsListed(const MistakeFile& mistake, const std::vector<GradeResult>& results) {
+    std::vector<std::string> problems;
     for (const std::string& name : mistake.fails) {
         auto result = std::find_if(results.begin(), results.end(),
                                    [&](const GradeResult& entry) { return entry.caseName == name; });
@@ -40,6 +39,13 @@ MistakeVerdict judgeOutOfGallery(const MistakeFile& mistake, const std::vector<G
             problems.push_back(name + " " + (result->status == GradeStatus::Passed ? "passed"
                                              : std::string("is ") + statusName(result->status) + ": " + result->reason));
     }
+    return problems;
+}
+
+} // namespace
+
+MistakeVerdict judgeOutOfGallery(const MistakeFile& mistake, const std::vector<GradeResult>& results) {
+    std::vector<std::string> problems = notFailedAsListed(mistake, results), wrong, right;
     for (const GradeResult& result : results) {
         if (!result.hasHint()) continue;
         // Right only where the entry's hint lists this cause: hint-ok says so, and the
@@ -67,16 +73,7 @@ MistakeVerdict judgeOutOfGallery(const MistakeFile& mistake, const std::vector<G
 }
 
 MistakeVerdict judgeMistake(const MistakeFile& mistake, const std::vector<GradeResult>& results) {
-    std::vector<std::string> problems;
-    for (const std::string& name : mistake.fails) {
-        auto result = std::find_if(results.begin(), results.end(),
-                                   [&](const GradeResult& entry) { return entry.caseName == name; });
-        if (result == results.end())
-            problems.push_back(name + " was not graded");
-        else if (result->status != GradeStatus::Failed)
-            problems.push_back(name + " " + (result->status == GradeStatus::Passed ? "passed"
-                                             : std::string("is ") + statusName(result->status) + ": " + result->reason));
-    }
+    std::vector<std::string> problems = notFailedAsListed(mistake, results);
     std::vector<std::string> alsoFails;
     for (const GradeResult& result : results)
         if (result.status == GradeStatus::Failed &&
@@ -91,10 +88,18 @@ MistakeVerdict judgeMistake(const MistakeFile& mistake, const std::vector<GradeR
         auto result = std::find_if(results.begin(), results.end(),
                                    [&](const GradeResult& entry) { return entry.caseName == name; });
         if (result == results.end() || result->status != GradeStatus::Failed) continue;
-        // A failed property check has no picture to match; its own message says what does not hold.
-        if (result->hintMistake == mistake.name || result->propertyCheck) hintNamesIt = true;
-        else hintNotes.push_back(name + ": " + (result->hasHint() ? "hint names " + result->hintMistake : "no hint"));
+        if (result->hintMistake == mistake.name) hintNamesIt = true;
+        else if (!result->propertyCheck)
+            hintNotes.push_back(name + ": " + (result->hasHint() ? "hint names " + result->hintMistake : "no hint"));
     }
+    // A mistake that fails property checks only has no picture to match: each check's own
+    // message says what does not hold. One that also fails a picture case needs its hint there.
+    const bool checksOnly = std::all_of(mistake.fails.begin(), mistake.fails.end(), [&](const std::string& name) {
+        auto result = std::find_if(results.begin(), results.end(),
+                                   [&](const GradeResult& entry) { return entry.caseName == name; });
+        return result != results.end() && result->propertyCheck;
+    });
+    if (checksOnly && !mistake.fails.empty()) hintNamesIt = true;
     if (problems.empty() && !hintNamesIt) {
         std::string notes;
         for (std::size_t i = 0; i < hintNotes.size(); ++i) notes += (i ? "; " : "") + hintNotes[i];

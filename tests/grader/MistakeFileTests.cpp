@@ -164,3 +164,32 @@ TEST_CASE("judgeMistake: caught also needs a hint that names the mistake", "[gra
                                                       hinted("fly", "view_transposed")});
     CHECK_FALSE(elsewhere.caught);
 }
+
+TEST_CASE("judgeMistake: a failed property check stands in for a hint only when the mistake fails checks only",
+          "[grader][mistake][hint]") {
+    auto check = [](const std::string& name, GradeStatus status) {
+        GradeResult entry = result(name, status);
+        entry.propertyCheck = true;
+        return entry;
+    };
+    // Fails a property check only: the check's message explains it, no gallery hint is needed.
+    MistakeFile checksOnly = parseMistakeHeader("hint: h\ndocs: labs/05_shadows.md#texel-snapping\nfails: texel_snapping\n"
+                                                "file: cascades.cpp\n",
+                                                "no_texel_snapping.mistake");
+    MistakeVerdict onlyCheck = judgeMistake(checksOnly, {check("texel_snapping", GradeStatus::Failed),
+                                                         result("sun_columns", GradeStatus::Passed)});
+    CHECK(onlyCheck.caught);
+
+    // Fails a picture case too: that case still needs the hint naming the mistake.
+    MistakeFile mixed = parseMistakeHeader("hint: h\ndocs: labs/01_transforms.md#cameras\nfails: orbit_tumbled camera_limits\n"
+                                           "file: cameras.cpp\n",
+                                           "tumble_pitch_inverted.mistake");
+    MistakeVerdict noHint = judgeMistake(mixed, {result("orbit_tumbled", GradeStatus::Failed),
+                                                 check("camera_limits", GradeStatus::Failed)});
+    CHECK_FALSE(noHint.caught);
+    CHECK(noHint.detail.find("orbit_tumbled: no hint") != std::string::npos);
+    CHECK(noHint.detail.find("camera_limits") == std::string::npos);
+    MistakeVerdict hinted2 = judgeMistake(mixed, {hinted("orbit_tumbled", "tumble_pitch_inverted"),
+                                                  check("camera_limits", GradeStatus::Failed)});
+    CHECK(hinted2.caught);
+}
