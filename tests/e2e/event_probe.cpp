@@ -1,5 +1,6 @@
 // A lab that prints every window event and the first update step it gets, one
-// line each ("event KeyUp a", "event MouseDown Right at 100,80", "update 0.0167"):
+// line each ("event KeyUp a", "event MouseDown Right at 100,80", "update 0.0167"),
+// and takes key H for itself (the app then leaves it alone):
 // tests/e2e/window_events.sh drives it under Xvfb with xdotool. It is a Lab
 // like any other, run by runLab(), so what it prints is what a lab receives.
 
@@ -47,7 +48,9 @@ public:
         if (event.modifiers.alt) std::printf(" +alt");
         std::printf("\n");
         std::fflush(stdout);
-        return true;
+        // Only watching, but for H: the probe takes it, so the app must not
+        // print its help again.
+        return event.type == Type::KeyDown && event.key == stoa::keyOf('h');
     }
 
     void update(float seconds) override {

@@ -3,7 +3,7 @@
 # The event probe (event_probe.cpp, a Lab that prints what it receives) in a
 # window under Xvfb: keys down and up (a letter, F5, an arrow, Shift+b), mouse
 # buttons, the wheel and a resize must each reach the lab's handleEvent(), and
-# its update step must run.
+# its update step must run; a key the lab takes (H) the app leaves alone.
 set -euo pipefail
 program=$1 work=$2
 
@@ -34,7 +34,7 @@ done
 
 xdotool windowfocus --sync "$window"
 sleep 0.3
-xdotool key --delay 100 a F5 Left shift+b
+xdotool key --delay 100 a F5 Left shift+b h
 xdotool mousemove --window "$window" 100 80
 sleep 0.2
 xdotool click --delay 100 3
@@ -43,8 +43,13 @@ xdotool click --delay 100 5
 xdotool windowsize "$window" 400 300
 sleep 0.5
 
+# Waits up to 10 s for the line (a loaded machine may be slow to deliver).
 expect() {
-  grep -q -- "$1" "$work/stdout.txt" || fail "the lab did not receive: $1"
+  for _ in $(seq 1 50); do
+    grep -q -- "$1" "$work/stdout.txt" && return 0
+    sleep 0.2
+  done
+  fail "the lab did not receive: $1"
 }
 expect "^event KeyDown a$"
 expect "^event Text a$"
@@ -64,6 +69,9 @@ expect "^event Wheel -1"
 expect "^event MouseMove"
 expect "^event Resize 400x300"
 expect "^update 0.0"
+expect "^event KeyDown h$"
+[ "$(grep -c "Shaders reload by themselves" "$work/stdout.txt")" -eq 1 ] ||
+  fail "the app printed its help for H, which the lab took"
 kill -0 "$pid" 2>/dev/null || fail "the program died"
 
 xdotool key Escape

@@ -42,7 +42,7 @@ sleep 0.5
 # save NAME COUNT: F12, then wait for the COUNT-th "saved" line.
 save() {
   xdotool key F12
-  for _ in $(seq 1 50); do
+  for _ in $(seq 1 100); do
     [ -f "$shot" ] && [ "$(grep -c "^saved $shot" stdout.txt)" -ge "$2" ] && break
     sleep 0.1
   done
@@ -51,8 +51,12 @@ save() {
 }
 save before.png 1
 xdotool key F1
-sleep 0.5
+for _ in $(seq 1 50); do
+  grep -q "ui panel on" stdout.txt && break
+  sleep 0.2
+done
 grep -q "ui panel on" stdout.txt || fail "F1 did not turn the UI panel on"
+sleep 0.3   # a frame or two with the panel
 save after.png 2
 kill -0 "$pid" 2>/dev/null || fail "the program died with the panel on"
 xdotool key Escape

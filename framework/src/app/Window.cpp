@@ -104,13 +104,13 @@ void onKeyDown(unsigned char raw, int x, int y) {
     InputEvent down = makeEvent(InputEvent::Type::KeyDown);
     down.key = key;
     dispatch(down);
-    if (raw >= 32 && raw != 127) {
+    guarded([&] { s_current->handler->keyPressed(static_cast<unsigned char>(key), s_current->input); });
+    if (raw >= 32 && raw != 127) {   // a character typed: after its key
         InputEvent text = makeEvent(InputEvent::Type::Text);
         text.character = raw;
         text.key = key;
         dispatch(text);
     }
-    guarded([&] { s_current->handler->keyPressed(static_cast<unsigned char>(key), s_current->input); });
 }
 
 void onKeyUp(unsigned char raw, int x, int y) {

@@ -65,7 +65,7 @@ public:
     }
 
     // Every event goes to the UI panel first (when shown), then to the lab;
-    // what the panel takes goes no further. F1 shows the panel, F12 saves the
+    // what the panel or the lab takes, the app leaves alone (but Escape quits). F1 shows the panel, F12 saves the
     // window as labNN_name-screenshot.png in the current folder.
     void event(const InputEvent& event, const InputState&) override {
         m_uiTookEvent = false;
@@ -80,7 +80,7 @@ public:
         } else if (event.type == InputEvent::Type::KeyDown && event.key == Key::F12) {
             m_screenshotRequested = true;
         }
-        runStudentCode([&] { m_lab.handleEvent(event); });
+        runStudentCode([&] { m_uiTookEvent = m_lab.handleEvent(event); });
     }
 
     void drawUi(glm::ivec2 size) {
@@ -131,7 +131,7 @@ public:
     }
 
     void keyPressed(unsigned char key, const InputState&) override {
-        if (m_uiTookEvent) return;
+        if (m_uiTookEvent && key != 27) return;   // Escape always quits
         if (key == 27) {
             m_window.requestClose();
         } else if (key >= '1' && key <= '9') {
@@ -348,7 +348,7 @@ private:
     std::unique_ptr<TextureOverlay> m_overlay;
     std::unique_ptr<ImGuiLayer> m_ui;   // made at the first F1
     bool m_showUi = false;
-    bool m_uiTookEvent = false;         // the panel used the event being handled
+    bool m_uiTookEvent = false;         // the panel or the lab used the event being handled
     bool m_screenshotRequested = false;
 };
 

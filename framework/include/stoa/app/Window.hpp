@@ -25,7 +25,8 @@ public:
     /// Every event, before the callbacks below; `input` already includes it.
     virtual void event(const InputEvent& event, const InputState& input) { (void)event; (void)input; }
     /// Shorthands for the common cases, called after event():
-    /// a key that types a character went down: ASCII, lower case for letters; 27 is Escape.
+    /// a key below 256 went down (a character's key, lower case for letters; Tab, Enter,
+    /// Backspace, Delete; 27 is Escape), before its Text event.
     virtual void keyPressed(unsigned char key, const InputState& input) { (void)key; (void)input; }
     virtual void mouseDragged(glm::vec2 deltaPixels, const InputState& input) { (void)deltaPixels; (void)input; }
     virtual void mouseWheel(int notches) { (void)notches; }
@@ -56,7 +57,9 @@ public:
     /// Presents the frame just drawn (run() does this after display()).
     void swapBuffers();
 
-    struct State;   // the event loop's state, reached by GLUT's plain-function callbacks
+    /// The event loop's state (input, clock, handler), owned here and reached
+    /// by GLUT's plain-function callbacks while this window lives.
+    struct State;
 
 private:
     std::unique_ptr<State> m_state;

@@ -58,7 +58,8 @@ public:
     virtual bool keyPressed(unsigned char key) { (void)key; return false; }
     /// Every event of the window (keys down and up, special keys, mouse
     /// buttons, motion, wheel, text, resize), before the app's own handling of
-    /// it; return true when the lab used it. Runs under the stub guard.
+    /// it; return true when the lab used it, and the app leaves it alone (no
+    /// camera move, no app key; Escape still quits). Runs under the stub guard.
     virtual bool handleEvent(const InputEvent& event) { (void)event; return false; }
     /// Advances the lab's simulation by `seconds` of simulated time: called in
     /// the window at fixed steps (FixedStepClock), after the camera moved.

@@ -5,7 +5,7 @@
 // 01-05 fail to link. Instead the lab that has the function hands it over
 // here (Lab::hooks()), and a renderer calls it when it is set:
 //
-//   // labs/06_scene/lab.cpp
+//   // in lab 06's app (its lab.cpp)
 //   m_hooks.isVisible = [](const BoundingSphere& sphere, const glm::mat4& viewProjection) {
 //       return sphereInFrustum(extractFrustumPlanes(viewProjection), sphere);   // the student's
 //   };
