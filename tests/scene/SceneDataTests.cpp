@@ -69,7 +69,7 @@ TEST_CASE("Bounds: a mesh's box and sphere, carried into world space", "[scene]"
     CHECK(near(boundsOf(Mesh{}).box.max, glm::vec3(0.0f)));
 }
 
-TEST_CASE("Objects: a child follows its parent; bounds in world space", "[scene][needs-lab-code]") {
+TEST_CASE("Objects: a child follows its parent, and bounds carry into world space", "[scene][needs-lab-code]") {
     HeadlessContext context;
     Scene scene;
     auto mesh = std::make_shared<const GpuMesh>(shapes::cube(1.0f));
@@ -145,7 +145,7 @@ TEST_CASE("FrameUniforms: FrameBlock matches the std140 block of common/frame.gl
     }
 }
 
-TEST_CASE("A framework renderer calls a lab's visibility hook; without one it draws everything",
+TEST_CASE("A framework renderer calls a lab's visibility hook, and draws everything without one",
           "[scene][needs-lab-code]") {
     HeadlessContext context;
     const Program program = Program::fromFiles("instanced/per_object.vert", "instanced/instanced.frag",
@@ -199,6 +199,45 @@ TEST_CASE("A framework renderer calls a lab's visibility hook; without one it dr
     hooks.isVisible = nullptr;
     render();
     CHECK(renderer.drawnCount() == 2);
+}
+
+TEST_CASE("A framework renderer shades with the point lights a lab's light-culling hook keeps",
+          "[scene][needs-lab-code]") {
+    HeadlessContext context;
+    const Program program = Program::fromFiles("instanced/per_object.vert", "instanced/instanced.frag",
+                                               {paths::shadersDir()});
+    Scene scene;
+    scene.ambient = glm::vec3(0.0f);
+    scene.pointLights.push_back({{0.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}});
+    scene.pointLights.push_back({{0.0f, 2.0f, 0.0f}, {0.0f, 1.0f, 0.0f}});
+    scene.pointLights.push_back({{0.0f, 3.0f, 0.0f}, {0.0f, 0.0f, 1.0f}});
+    scene.add(std::make_unique<MeshObject>(std::make_shared<const GpuMesh>(shapes::cube(1.0f))));
+    const OrbitCamera camera({0.0f, 0.0f, 0.0f}, 6.0f, 0.0f, 0.0f);
+    Framebuffer target(16, 16);
+    ForwardRenderer renderer;
+    LabHooks hooks;
+    int calls = 0;
+    hooks.cullLights = [&](const std::vector<PointLight>& lights, const Camera&) {
+        ++calls;
+        CHECK(lights.size() == 3);
+        return std::vector<int>{2, 0, 7};   // 7 does not exist: skipped
+    };
+    renderer.hooks = &hooks;
+    target.bind();
+    renderer.render(scene, camera, program, {16, 16});
+    CHECK(calls == 1);
+
+    // The lights the frame shades with are those of the uniform block it
+    // uploaded: read it back from the buffer bound at kBinding.
+    GLint buffer = 0;
+    glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, FrameUniforms::kBinding, &buffer);
+    REQUIRE(buffer != 0);
+    FrameBlock block{};
+    glBindBuffer(GL_UNIFORM_BUFFER, static_cast<GLuint>(buffer));
+    glGetBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameBlock), &block);
+    CHECK(block.pointLightCount == 2);
+    CHECK(block.pointLights[0].color == glm::vec3(0.0f, 0.0f, 1.0f));
+    CHECK(block.pointLights[1].color == glm::vec3(1.0f, 0.0f, 0.0f));
 }
 
 TEST_CASE("InstancedMesh: per-instance transforms and colours in one draw", "[scene][needs-lab-code]") {
