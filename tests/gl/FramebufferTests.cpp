@@ -40,7 +40,7 @@ TEST_CASE("Framebuffer: readColor returns the top row first") {
         Program::fromFiles(test::glShadersDir / "position2d.vert", test::glShadersDir / "solid.frag", {});
     const test::Triangles2D topHalf = test::Triangles2D::rectangle(-1.0f, 0.0f, 1.0f, 1.0f); // clip y > 0: the top
     Framebuffer target(16, 16);
-    beginPass({&target, RenderState::overlay()});
+    beginPass(passInto(target, RenderState::overlay()));
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     program.use();

@@ -37,7 +37,7 @@ Mesh clipSquare(bool indexed) {
 Image drawn(const GpuMesh& mesh) {
     const Program program = Program::fromFiles(glShadersDir / "mesh.vert", glShadersDir / "mesh.frag", {});
     Framebuffer target(16, 16);
-    beginPass({&target, RenderState::overlay()});
+    beginPass(passInto(target, RenderState::overlay()));
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     program.use();
@@ -75,7 +75,7 @@ TEST_CASE("GpuMesh: the tangent and its handedness reach attribute location 3") 
     const GpuMesh mesh(square);
     const Program program = Program::fromFiles(glShadersDir / "mesh_tangent.vert", glShadersDir / "mesh.frag", {});
     Framebuffer target(16, 16);
-    beginPass({&target, RenderState::overlay()});
+    beginPass(passInto(target, RenderState::overlay()));
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     program.use();

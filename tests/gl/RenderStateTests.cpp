@@ -55,7 +55,7 @@ RenderState opaqueDepthTested() {
 // Pass A: additive, into `a`; pass B: depth tested, into `b`. Each draws a
 // counter-clockwise and a clockwise rectangle over the same pixels.
 void passA(const Framebuffer& a, const Program& program, const test::Triangles2D& ccw, const test::Triangles2D& cw) {
-    PassDescription pass{&a, additiveOverlay()};
+    PassDescription pass = passInto(a, additiveOverlay());
     pass.clear.color = true;
     pass.clear.colorValue = {0.25f, 0.25f, 0.25f, 1.0f};
     beginPass(pass);
@@ -68,7 +68,7 @@ void passA(const Framebuffer& a, const Program& program, const test::Triangles2D
 }
 
 void passB(const Framebuffer& b, const Program& program, const test::Triangles2D& ccw, const test::Triangles2D& cw) {
-    PassDescription pass{&b, opaqueDepthTested()};
+    PassDescription pass = passInto(b, opaqueDepthTested());
     pass.clear.color = pass.clear.depth = pass.clear.stencil = true;
     beginPass(pass);
     program.use();
@@ -154,7 +154,7 @@ TEST_CASE("Wrappers change only their own binding") {
     }
     SECTION("binding a framebuffer keeps the viewport") {
         Framebuffer small(4, 4), large(32, 32);
-        beginPass({&small});
+        beginPass(passInto(small));
         large.bind();
         GLint viewport[4];
         glGetIntegerv(GL_VIEWPORT, viewport);
@@ -187,7 +187,7 @@ TEST_CASE("Framebuffer: a second framebuffer shares the first's depth-stencil te
     CHECK(lighting.depthTexture() == gBuffer.depthTexture());
 
     // The geometry pass writes depth 0.25 (clip z -0.5) over the left half.
-    PassDescription geometry{&gBuffer};
+    PassDescription geometry = passInto(gBuffer);
     geometry.clear.color = geometry.clear.depth = true;
     beginPass(geometry);
     program.use();
@@ -197,7 +197,7 @@ TEST_CASE("Framebuffer: a second framebuffer shares the first's depth-stencil te
 
     // The lighting pass tests against that depth without clearing or writing
     // it: a full-screen rectangle at depth 0.5 shows on the right half only.
-    PassDescription light{&lighting};
+    PassDescription light = passInto(lighting);
     light.clear.color = true;
     light.state.depth.write = false;
     beginPass(light);

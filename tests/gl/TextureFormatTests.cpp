@@ -46,7 +46,7 @@ glm::u8vec4 sampleLevel(const Texture2D& texture, glm::vec2 uv, float lod) {
                                                  ShaderSource::fromText(fragment, "level.frag", {}));
     VertexArray empty;
     Framebuffer target(2, 2);
-    beginPass({&target, RenderState::overlay()});
+    beginPass(passInto(target, RenderState::overlay()));
     texture.bind(0);
     program.use();
     program.set("uTexture", 0);

@@ -21,7 +21,7 @@ glm::u8vec4 sampleAt(const Texture2D& texture, glm::vec2 uv) {
     const Program program = Program::fromFiles(glShadersDir / "fullscreen.vert", glShadersDir / "sample.frag", {});
     VertexArray empty; // core profile: a vertex array must be bound to draw
     Framebuffer target(2, 2);
-    beginPass({&target, RenderState::overlay()});
+    beginPass(passInto(target, RenderState::overlay()));
     texture.bind(0);
     program.use();
     program.set("uTexture", 0);

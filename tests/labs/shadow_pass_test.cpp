@@ -112,7 +112,7 @@ TEST_CASE("renderShadowPass fills the whole map with the depth seen from the lig
 
     stoa::Framebuffer map(64, 64, depthOnly());
     stoa::Framebuffer elsewhere(16, 16);
-    stoa::beginPass({&elsewhere});   // the viewport is 16x16 now: the pass must set the map's own
+    stoa::beginPass(stoa::passInto(elsewhere));   // the viewport is 16x16 now: the pass must set the map's own
 
     stoa::renderShadowPass(scene, map, depth, overheadLight());
     requireAll(map.readDepth(), 0.4f);

@@ -257,7 +257,7 @@ TEST_CASE("InstancedMesh: per-instance transforms and colours in one draw", "[sc
                         {glm::translate(glm::mat4(1.0f), {1.0f, 0.0f, 0.0f}), {1.0f, 1.0f, 0.0f, 1.0f}}});
     CHECK(cubes.instanceCount() == 2);
     Framebuffer target(64, 32);
-    PassDescription pass{&target};
+    PassDescription pass = passInto(target);
     pass.clear.color = pass.clear.depth = true;
     beginPass(pass);
     program.use();

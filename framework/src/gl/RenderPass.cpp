@@ -51,4 +51,11 @@ PassDescription passInto(glm::ivec2 size, const RenderState& state) {
     return pass;
 }
 
+PassDescription passInto(const Framebuffer& target, const RenderState& state) {
+    PassDescription pass;
+    pass.target = &target;
+    pass.state = state;
+    return pass;
+}
+
 } // namespace stoa

@@ -12,7 +12,7 @@
 //
 //   stoa::HeadlessContext context;               // $STOA_HEADLESS, else OSMesa, else EGL
 //   stoa::Framebuffer target(256, 256);
-//   stoa::beginPass({&target});                  // RenderPass.hpp
+//   stoa::beginPass(stoa::passInto(target));     // RenderPass.hpp
 //   ...draw...
 //   stoa::Image frame = target.readColor();
 

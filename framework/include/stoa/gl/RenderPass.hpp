@@ -48,5 +48,7 @@ void beginPass(const PassDescription& pass);
 
 /// A pass into the framebuffer bound now, over `size` pixels from the corner.
 PassDescription passInto(glm::ivec2 size, const RenderState& state = {});
+/// A pass into all of `target`; nothing cleared.
+PassDescription passInto(const Framebuffer& target, const RenderState& state = {});
 
 } // namespace stoa
