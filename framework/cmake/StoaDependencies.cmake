@@ -16,6 +16,9 @@ endfunction()
 stoa_require_pkg(GLEW glew libglew-dev)
 stoa_require_pkg(GLUT glut freeglut3-dev)
 stoa_require_pkg(STB stb libstb-dev)
+# Dear ImGui with its GLUT and OpenGL 3 backends, built into Debian's static
+# libimgui.a: the window's UI panel (F1; framework/src/app/ImGuiLayer.cpp).
+stoa_require_pkg(IMGUI imgui libimgui-dev)
 
 find_package(tinyobjloader CONFIG QUIET)
 if(NOT tinyobjloader_FOUND)

@@ -50,12 +50,11 @@ public:
 
     std::shared_ptr<const stoa::Texture2D> normalMap;  // none: lit with the mesh's normals
 
-    void draw(const stoa::Program& program) const override {
+    void setDrawUniforms(const stoa::Program& program) const override {
         // The sampler keeps its own unit even without a map (as MeshObject's do).
         program.set("uNormalMap", kFirstFreeTextureUnit);
         program.set("uHasNormalMap", normalMap != nullptr);
         if (normalMap) normalMap->bind(kFirstFreeTextureUnit);
-        MeshObject::draw(program);
     }
 };
 

@@ -1,6 +1,6 @@
 // Lab 05, going further: cascaded shadow maps for a large scene.
 // Read docs/labs/05_shadows.md, "Cascaded shadow maps". The renderer
-// (shadow_renderer.cpp) calls, every frame: cascadeSplits() once, then for each
+// (framework/src/render/ShadowRenderer.cpp) calls, every frame: cascadeSplits() once, then for each
 // slice frustumSliceCorners() and cascadeLightMatrix(), and renders one map per
 // slice with your renderShadowPass(). Only the cascade cases call these.
 

@@ -1,7 +1,9 @@
 // Lab 05 app: shadow maps. The student's depth pass (shadow_pass.cpp) and
 // light-space matrices (light_space.cpp) make the map; shaders/shadows/shadowed.frag
 // lights the scene with the student's lab-02 lighting and tests it against the
-// map with the student's shadows.glsl. shadow_renderer.cpp puts the passes together.
+// map with the student's shadows.glsl. The framework's ShadowRenderer
+// (stoa/render/ShadowRenderer.hpp) puts the passes together, calling the
+// student's functions handed to it here (ShadowLabCode::fromLab05()).
 // With cascades (cascades = N), the student's cascades.cpp fits one map per slice
 // of the camera's frustum and shaders/shadows/cascaded.frag picks the slice with
 // the student's cascades.glsl.
@@ -28,11 +30,10 @@
 //   cascade_lambda = 0..1                 the practical split's blend (default 0.75)
 //   cascade_far = d                       view depth the last cascade ends at (default 80)
 //   cascade_colors = on | off             tint each cascade (default off)
-// Cascades use their own bias, a few texels of each map (shadow_renderer.cpp); `bias` is
+// Cascades use their own bias, a few texels of each map (ShadowRenderer.cpp); `bias` is
 // for the single map.
 
 #include "checks.hpp"
-#include "shadow_renderer.hpp"
 
 #include <stoa/camera/CameraRig.hpp>
 #include <stoa/geometry/ObjLoader.hpp>
@@ -41,6 +42,7 @@
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/ShadowMapping.hpp>
+#include <stoa/render/ShadowRenderer.hpp>
 #include <stoa/scene/AcropolisScene.hpp>
 #include <stoa/scene/MeshObject.hpp>
 #include <stoa/scene/ShapesScene.hpp>
@@ -111,7 +113,7 @@ public:
         const stoa::Program& depth = resources.loadProgram("shadows/depth.vert", "shadows/depth.frag");
         const stoa::Program& shadowed = resources.loadProgram("shadows/shadowed.vert", "shadows/shadowed.frag");
         const stoa::Program& mapView = resources.loadProgram("shadows/depth_view.vert", "shadows/depth_view.frag");
-        m_renderer = std::make_unique<stoa::ShadowRenderer>(depth, shadowed, mapView);
+        m_renderer = std::make_unique<stoa::ShadowRenderer>(depth, shadowed, mapView, stoa::ShadowLabCode::fromLab05());
         m_depthProgram = &depth;
         m_resources = &resources;
     }

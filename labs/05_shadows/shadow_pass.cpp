@@ -3,8 +3,8 @@
 
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/gl/Framebuffer.hpp>
-#include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/gl/RenderPass.hpp>
 #include <stoa/render/ShadowMapping.hpp>
 #include <stoa/scene/Scene.hpp>
 
@@ -12,10 +12,10 @@ namespace stoa {
 
 void renderShadowPass(const Scene& scene, const Framebuffer& shadowMap, const Program& depthProgram,
                       const glm::mat4& lightSpaceMatrix) {
-    // TODO(lab05): bind the map (Framebuffer::bind() sets the viewport), clear its
-    // depth, depth test on, face culling off (both faces go into the map), then
-    // set uLightSpaceMatrix on depthProgram and let every object draw with it
-    // (object->draw(depthProgram) sets uModel). Turn culling back on at the end.
+    // TODO(lab05): begin a pass (a PassDescription and beginPass()) into the map
+    // with its depth cleared, depth test on and face culling off (both faces go
+    // into the map), then set uLightSpaceMatrix on depthProgram and let every
+    // object draw with it (object->draw(depthProgram) sets uModel).
     (void)scene;
     (void)shadowMap;
     (void)depthProgram;

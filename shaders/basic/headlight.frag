@@ -1,10 +1,8 @@
 #version 330 core
-#include "common/lights.glsl"
+#include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
 
 in vec3 vPositionWorld;
 in vec3 vNormalWorld;
-
-uniform vec3 uCameraPosition;
 uniform Material uMaterial;
 
 out vec4 fragColor;

@@ -1,4 +1,5 @@
 #version 330 core
+#include "common/frame.glsl"   // the per-frame uniform block
 // Lab 01's shader: positions through the student's matrices, normals to world
 // space, shaded by a light at the eye so every shape reads clearly.
 
@@ -6,8 +7,6 @@ layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 
 uniform mat4 uModel;
-uniform mat4 uView;
-uniform mat4 uProjection;
 uniform mat3 uNormalMatrix;
 
 out vec3 vPositionWorld;

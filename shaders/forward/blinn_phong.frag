@@ -1,20 +1,13 @@
 #version 330 core
 // Lab 02's fragment stage: ambient plus every light, each lit by the student's
 // lighting.glsl. docs/labs/02_shading.md explains the sum.
-#include "common/lights.glsl"
+#include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
 #include "02_shading/lighting.glsl"
 
 in vec3 vPositionWorld;
 in vec3 vNormalWorld;
 in vec2 vUv;
-
-uniform vec3 uCameraPosition;
-uniform vec3 uAmbient;
 uniform Material uMaterial;
-uniform int uDirectionalLightCount;
-uniform DirectionalLight uDirectionalLights[MAX_DIRECTIONAL_LIGHTS];
-uniform int uPointLightCount;
-uniform PointLight uPointLights[MAX_POINT_LIGHTS];
 
 out vec4 fragColor;
 

@@ -2,7 +2,7 @@
 // Lab 04's fragment stage: lab 02's Blinn-Phong in tangent space, with the
 // normal from the normal map (04_normal_mapping/tangent_space.glsl unpacks it).
 // docs/labs/04_normal_mapping.md, "Lighting in tangent space".
-#include "common/lights.glsl"
+#include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
 #include "02_shading/lighting.glsl"
 #include "04_normal_mapping/tangent_space.glsl"
 
@@ -18,13 +18,7 @@ in mat3 vTangentToWorld;
 in vec3 vToEyeTangent;
 in vec3 vToDirectionalTangent[BUMP_DIRECTIONAL_LIGHTS];
 in vec3 vToPointTangent[BUMP_POINT_LIGHTS];
-
-uniform vec3 uAmbient;
 uniform Material uMaterial;
-uniform int uDirectionalLightCount;
-uniform DirectionalLight uDirectionalLights[MAX_DIRECTIONAL_LIGHTS];
-uniform int uPointLightCount;
-uniform PointLight uPointLights[MAX_POINT_LIGHTS];
 uniform bool uHasDiffuseMap;
 uniform sampler2D uDiffuseMap;
 uniform bool uHasNormalMap;

@@ -3,7 +3,7 @@
 // tangent_space.glsl) takes the eye and light vectors into tangent space, so
 // the fragment stage lights with the normal map's normals as they are stored.
 // docs/labs/04_normal_mapping.md, "Lighting in tangent space".
-#include "common/lights.glsl"
+#include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
 #include "02_shading/transform.glsl"
 #include "04_normal_mapping/tangent_space.glsl"
 
@@ -17,12 +17,7 @@ layout(location = 2) in vec2 aUv;
 layout(location = 3) in vec4 aTangent;   // xyz tangent, w handedness
 
 uniform mat4 uModel;
-uniform mat4 uView;
-uniform mat4 uProjection;
 uniform mat3 uNormalMatrix;
-uniform vec3 uCameraPosition;
-uniform DirectionalLight uDirectionalLights[MAX_DIRECTIONAL_LIGHTS];
-uniform PointLight uPointLights[MAX_POINT_LIGHTS];
 
 out vec2 vUv;
 out mat3 vTangentToWorld;                               // for the normals view

@@ -4,7 +4,7 @@
 // tested against the cascade the student's cascades.glsl picks. Only the
 // cascade cases load this program, so cascades.glsl's stubs leave the other
 // cases alone.
-#include "common/lights.glsl"
+#include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
 #include "02_shading/lighting.glsl"
 #include "05_shadows/shadows.glsl"
 
@@ -13,12 +13,7 @@
 in vec3 vPositionWorld;
 in vec3 vNormalWorld;
 in vec2 vUv;
-
-uniform vec3 uCameraPosition;
-uniform vec3 uAmbient;
-uniform mat4 uView;
 uniform Material uMaterial;
-uniform DirectionalLight uDirectionalLights[MAX_DIRECTIONAL_LIGHTS];
 
 uniform bool uShadowsEnabled;
 uniform sampler2D uCascadeMaps[MAX_CASCADES];      // window depth, nearest, clamped to the edge

@@ -2,19 +2,14 @@
 // Lab 05's second pass: the one shadow-casting light (the sun or a point light),
 // lit by the student's lab-02 lighting.glsl, dimmed where the student's
 // shadows.glsl finds the point hidden from the light (docs/labs/05_shadows.md).
-#include "common/lights.glsl"
+#include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
 #include "02_shading/lighting.glsl"
 #include "05_shadows/shadows.glsl"
 
 in vec3 vPositionWorld;
 in vec3 vNormalWorld;
 in vec2 vUv;
-
-uniform vec3 uCameraPosition;
-uniform vec3 uAmbient;
 uniform Material uMaterial;
-uniform DirectionalLight uDirectionalLights[MAX_DIRECTIONAL_LIGHTS];
-uniform PointLight uPointLights[MAX_POINT_LIGHTS];
 
 uniform int uLightKind;            // 0: uDirectionalLights[0]; 1: uPointLights[0]
 uniform bool uShadowsEnabled;

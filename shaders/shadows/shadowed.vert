@@ -1,4 +1,5 @@
 #version 330 core
+#include "common/frame.glsl"   // the per-frame uniform block
 // Lab 05's second pass, vertex stage: the student's lab-02 transforms.
 #include "02_shading/transform.glsl"
 
@@ -7,8 +8,6 @@ layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
 
 uniform mat4 uModel;
-uniform mat4 uView;
-uniform mat4 uProjection;
 uniform mat3 uNormalMatrix;
 
 out vec3 vPositionWorld;

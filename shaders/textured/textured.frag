@@ -3,21 +3,14 @@
 // textures.glsl), lit by ambient plus every light with the student's lab-02
 // lighting.glsl. The maps and their flags are MeshObject's uniforms
 // (framework/include/stoa/scene/MeshObject.hpp).
-#include "common/lights.glsl"
+#include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
 #include "02_shading/lighting.glsl"
 #include "03_meshes/textures.glsl"
 
 in vec3 vPositionWorld;
 in vec3 vNormalWorld;
 in vec2 vUv;
-
-uniform vec3 uCameraPosition;
-uniform vec3 uAmbient;
 uniform Material uMaterial;
-uniform int uDirectionalLightCount;
-uniform DirectionalLight uDirectionalLights[MAX_DIRECTIONAL_LIGHTS];
-uniform int uPointLightCount;
-uniform PointLight uPointLights[MAX_POINT_LIGHTS];
 
 uniform sampler2D uDiffuseMap;   // texture unit 0
 uniform bool uHasDiffuseMap;

@@ -1,4 +1,5 @@
 #version 330 core
+#include "common/frame.glsl"   // the per-frame uniform block
 // Lab 03's vertex stage: lab 02's transforms (the student's transform.glsl)
 // and lab 03's texture coordinates (textures.glsl).
 #include "02_shading/transform.glsl"
@@ -9,8 +10,6 @@ layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
 
 uniform mat4 uModel;
-uniform mat4 uView;
-uniform mat4 uProjection;
 uniform mat3 uNormalMatrix;
 
 out vec3 vPositionWorld;

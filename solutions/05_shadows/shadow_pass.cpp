@@ -2,8 +2,8 @@
 // Read docs/labs/05_shadows.md, "The two passes".
 
 #include <stoa/gl/Framebuffer.hpp>
-#include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/gl/RenderPass.hpp>
 #include <stoa/render/ShadowMapping.hpp>
 #include <stoa/scene/Scene.hpp>
 
@@ -11,19 +11,19 @@ namespace stoa {
 
 void renderShadowPass(const Scene& scene, const Framebuffer& shadowMap, const Program& depthProgram,
                       const glm::mat4& lightSpaceMatrix) {
-    shadowMap.bind();   // also the viewport: the whole map
-    glClear(GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    PassDescription pass;
+    pass.target = &shadowMap;    // the viewport is the whole map
+    pass.clear.depth = true;
+    pass.state.depth.test = true;
+    pass.state.depth.func = GL_LESS;
     // Both faces go into the map: the single-sided floor must be there too, and
     // all the bias is then the shader's, where you can see what it does.
-    glDisable(GL_CULL_FACE);
+    pass.state.cull = CullMode::None;
+    beginPass(pass);
 
     depthProgram.use();
     depthProgram.set("uLightSpaceMatrix", lightSpaceMatrix);
     for (const auto& object : scene.objects()) object->draw(depthProgram);
-
-    glEnable(GL_CULL_FACE);
 }
 
 } // namespace stoa

@@ -13,8 +13,6 @@
 // the ratio uses CPU time, which a busy machine disturbs less.
 // The number of llvmpipe threads follows $LP_NUM_THREADS (Mesa's default: one per core).
 
-#include "shadow_renderer.hpp"
-
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/camera/OrbitCamera.hpp>
 #include <stoa/core/Paths.hpp>
@@ -22,6 +20,7 @@
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/render/ShadowMapping.hpp>
+#include <stoa/render/ShadowRenderer.hpp>
 #include <stoa/scene/AcropolisScene.hpp>
 
 #include <algorithm>
@@ -91,7 +90,7 @@ int main(int argc, char** argv) {
             stoa::Program::fromFiles("shadows/depth_view.vert", "shadows/depth_view.frag", searchPath);
         const stoa::Program cascaded =
             stoa::Program::fromFiles("shadows/shadowed.vert", "shadows/cascaded.frag", searchPath);
-        stoa::ShadowRenderer renderer(depth, shadowed, mapView);
+        stoa::ShadowRenderer renderer(depth, shadowed, mapView, stoa::ShadowLabCode::fromLab05());
         renderer.setCascadeProgram(&cascaded);
 
         stoa::Scene scene;

@@ -2,6 +2,7 @@
 
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/image/Image.hpp>
 
@@ -39,9 +40,10 @@ TEST_CASE("Framebuffer: readColor returns the top row first") {
         Program::fromFiles(test::glShadersDir / "position2d.vert", test::glShadersDir / "solid.frag", {});
     const test::Triangles2D topHalf = test::Triangles2D::rectangle(-1.0f, 0.0f, 1.0f, 1.0f); // clip y > 0: the top
     Framebuffer target(16, 16);
-    target.bind();
+    beginPass(passInto(target, RenderState::overlay()));
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
+    program.use();
     program.set("uColor", glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
     topHalf.draw();
     const Image image = target.readColor();
@@ -64,13 +66,13 @@ TEST_CASE("Framebuffer: depth as a texture, without colour (a shadow map)") {
     const Program program =
         Program::fromFiles(test::glShadersDir / "position2d.vert", test::glShadersDir / "solid.frag", {});
     const test::Triangles2D topHalf = test::Triangles2D::rectangle(-1.0f, 0.0f, 1.0f, 1.0f);
-    shadowMap.bind();
-    glEnable(GL_DEPTH_TEST);
-    glClearDepth(1.0);
-    glClear(GL_DEPTH_BUFFER_BIT);
+    PassDescription pass;
+    pass.target = &shadowMap;
+    pass.clear.depth = true;
+    pass.state.cull = CullMode::None;
+    beginPass(pass);
     program.use();
     topHalf.draw(); // z = 0 in clip space: window depth 0.5
-    glDisable(GL_DEPTH_TEST);
     const std::vector<float> depth = shadowMap.readDepth();
     REQUIRE(depth.size() == 64);
     CHECK(depth[0 * 8 + 3] == Approx(0.5f).margin(1e-4)); // top row

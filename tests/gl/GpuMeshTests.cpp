@@ -5,6 +5,7 @@
 #include <stoa/gl/Buffer.hpp>
 #include <stoa/gl/Debug.hpp>
 #include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/image/Image.hpp>
@@ -36,7 +37,7 @@ Mesh clipSquare(bool indexed) {
 Image drawn(const GpuMesh& mesh) {
     const Program program = Program::fromFiles(glShadersDir / "mesh.vert", glShadersDir / "mesh.frag", {});
     Framebuffer target(16, 16);
-    target.bind();
+    beginPass(passInto(target, RenderState::overlay()));
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     program.use();
@@ -74,7 +75,7 @@ TEST_CASE("GpuMesh: the tangent and its handedness reach attribute location 3") 
     const GpuMesh mesh(square);
     const Program program = Program::fromFiles(glShadersDir / "mesh_tangent.vert", glShadersDir / "mesh.frag", {});
     Framebuffer target(16, 16);
-    target.bind();
+    beginPass(passInto(target, RenderState::overlay()));
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     program.use();

@@ -5,6 +5,7 @@
 #include <stoa/core/InputError.hpp>
 #include <stoa/gl/Buffer.hpp>
 #include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/Shader.hpp>
 #include <stoa/gl/Texture2D.hpp>
@@ -28,7 +29,7 @@ std::string normal(const fs::path& path) { return path.lexically_normal().generi
 /// The colour `program` draws over a 4x4 target, read at its centre.
 glm::u8vec4 drawnColour(const Program& program) {
     Framebuffer target(4, 4);
-    target.bind();
+    beginPass(passInto(target, RenderState::overlay()));
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     program.use();

@@ -11,6 +11,7 @@
 #include <stoa/core/InputError.hpp>
 #include <stoa/geometry/Shapes.hpp>
 #include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/ShaderSource.hpp>
@@ -45,8 +46,9 @@ glm::u8vec4 sampleLevel(const Texture2D& texture, glm::vec2 uv, float lod) {
                                                  ShaderSource::fromText(fragment, "level.frag", {}));
     VertexArray empty;
     Framebuffer target(2, 2);
-    target.bind();
+    beginPass(passInto(target, RenderState::overlay()));
     texture.bind(0);
+    program.use();
     program.set("uTexture", 0);
     program.set("uUv", uv);
     program.set("uLod", lod);

@@ -5,6 +5,7 @@
 #include <stoa/core/InputError.hpp>
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/Texture2D.hpp>
 #include <stoa/gl/VertexArray.hpp>
 #include <stoa/image/Image.hpp>
@@ -20,8 +21,9 @@ glm::u8vec4 sampleAt(const Texture2D& texture, glm::vec2 uv) {
     const Program program = Program::fromFiles(glShadersDir / "fullscreen.vert", glShadersDir / "sample.frag", {});
     VertexArray empty; // core profile: a vertex array must be bound to draw
     Framebuffer target(2, 2);
-    target.bind();
+    beginPass(passInto(target, RenderState::overlay()));
     texture.bind(0);
+    program.use();
     program.set("uTexture", 0);
     program.set("uUv", uv);
     empty.bind();

@@ -9,6 +9,7 @@
 #include <stoa/core/Paths.hpp>
 #include <stoa/geometry/Shapes.hpp>
 #include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/Texture2D.hpp>
@@ -111,11 +112,11 @@ TEST_CASE("renderShadowPass fills the whole map with the depth seen from the lig
 
     stoa::Framebuffer map(64, 64, depthOnly());
     stoa::Framebuffer elsewhere(16, 16);
-    elsewhere.bind();   // the viewport is 16x16 now: the pass must set the map's own
+    stoa::beginPass(stoa::passInto(elsewhere));   // the viewport is 16x16 now: the pass must set the map's own
 
     stoa::renderShadowPass(scene, map, depth, overheadLight());
     requireAll(map.readDepth(), 0.4f);
-    CHECK(glIsEnabled(GL_CULL_FACE) == GL_TRUE);   // as the second pass expects it
+    // Nothing to turn back on: the lit pass states its own RenderState.
 
     SECTION("a later pass clears the map and draws faces turned away from the light") {
         plane.position.y = 0.0f;               // further away: without a clear the old 0.4 would stay

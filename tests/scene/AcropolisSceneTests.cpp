@@ -9,6 +9,7 @@
 #include <stoa/core/Paths.hpp>
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/ShaderSource.hpp>
 #include <stoa/image/Image.hpp>
@@ -172,10 +173,13 @@ TEST_CASE("The Acropolis renders: stone in front, sky above", "[scene][acropolis
                                                  ShaderSource::fromText(kFragment, "preview.frag", {paths::shadersDir()}));
     const int width = 480, height = 270;
     Framebuffer target(width, height);
-    target.bind();
-    glEnable(GL_DEPTH_TEST);
-    glClearColor(0.55f, 0.7f, 0.9f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    PassDescription pass;
+    pass.target = &target;
+    pass.state.cull = CullMode::None;
+    pass.clear.color = pass.clear.depth = true;
+    pass.clear.colorValue = {0.55f, 0.7f, 0.9f, 1.0f};
+    beginPass(pass);
+    program.use();
     program.set("uView", glm::lookAt(glm::vec3(3.0f, 5.0f, 19.0f), glm::vec3(0.0f, 2.5f, -3.0f), glm::vec3(0.0f, 1.0f, 0.0f)));
     program.set("uProjection", glm::perspective(glm::radians(50.0f), float(width) / height, 0.1f, 100.0f));
     program.set("uSunDirection", scene.directionalLights.front().direction);

@@ -1,4 +1,5 @@
 #include <stoa/app/HeadlessContext.hpp>
+#include <stoa/gl/StateCache.hpp>
 
 #include <stoa/core/Assert.hpp>
 #include <stoa/core/InputError.hpp>
@@ -312,6 +313,7 @@ HeadlessContext::HeadlessContext(std::optional<HeadlessBackend> backend)
         gl::loadFunctions(&eglProcAddress, "EGL");
     }
     s_liveBackend = m_backend;
+    StateCache::current().reset();
 }
 
 HeadlessContext::~HeadlessContext() {

@@ -2,6 +2,7 @@
 
 #include <stoa/core/Assert.hpp>
 #include <stoa/gl/Debug.hpp>
+#include <stoa/gl/StateCache.hpp>
 #include <stoa/image/Image.hpp>
 
 #include <cstring>
@@ -39,11 +40,17 @@ bool isIntegerFormat(GLenum format) {
     }
 }
 
-GLint boundFramebuffer(GLenum which) {
-    GLint id = 0;
-    glGetIntegerv(which, &id);
-    return id;
+bool isDepthFormat(GLenum format) {
+    switch (format) {
+    case GL_DEPTH_COMPONENT16: case GL_DEPTH_COMPONENT24: case GL_DEPTH_COMPONENT32: case GL_DEPTH_COMPONENT32F:
+    case GL_DEPTH24_STENCIL8: case GL_DEPTH32F_STENCIL8:
+        return true;
+    default:
+        return false;
+    }
 }
+
+bool hasStencil(GLenum format) { return format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8; }
 
 } // namespace
 
@@ -52,20 +59,36 @@ Framebuffer::Framebuffer(int width, int height, const FramebufferOptions& option
     STOA_ASSERT(width > 0 && height > 0, "Framebuffer(): width and height must be positive.");
     STOA_ASSERT(!options.color || !options.colorFormats.empty(),
                 "Framebuffer(): options.color is set but options.colorFormats is empty. Name at least one format.");
-    const GLint previousDraw = boundFramebuffer(GL_DRAW_FRAMEBUFFER_BINDING);
-    const GLint previousRead = boundFramebuffer(GL_READ_FRAMEBUFFER_BINDING);
+    StateCache& cache = StateCache::current();
+    const GLuint previousDraw = cache.drawFramebuffer();
+    const GLuint previousRead = cache.readFramebuffer();
 
     STOA_GL_CALL(glGenFramebuffers(1, &m_id));
     STOA_GL_CALL(glBindFramebuffer(GL_FRAMEBUFFER, m_id));
 
+    auto checkShared = [&](const Texture2D& texture, const char* what) {
+        STOA_ASSERT(texture.id() != 0, "Framebuffer(): a shared attachment is an empty texture");
+        if (texture.width() != width || texture.height() != height)
+            throw std::runtime_error("Framebuffer(" + std::to_string(width) + "x" + std::to_string(height) +
+                                     "): the shared " + what + " texture is " + std::to_string(texture.width()) +
+                                     "x" + std::to_string(texture.height()) + "; attachments must match in size");
+    };
+
     std::vector<GLenum> drawBuffers;
     if (options.color) {
-        for (GLenum format : options.colorFormats) {
+        for (std::size_t i = 0; i < options.colorFormats.size(); ++i) {
+            const GLenum format = options.colorFormats[i];
             const GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(m_colorTextures.size());
-            TextureOptions sampling{/*mipmaps=*/false, GL_CLAMP_TO_EDGE, /*linear=*/!isIntegerFormat(format)};
-            m_colorTextures.push_back(Texture2D::empty(width, height, format, sampling));
+            if (i < options.colorAttachments.size() && options.colorAttachments[i]) {
+                checkShared(*options.colorAttachments[i], "colour");
+                m_colorTextures.push_back(options.colorAttachments[i]);
+            } else {
+                TextureOptions sampling{/*mipmaps=*/false, GL_CLAMP_TO_EDGE, /*linear=*/!isIntegerFormat(format)};
+                m_colorTextures.push_back(
+                    std::make_shared<Texture2D>(Texture2D::empty(width, height, format, sampling)));
+            }
             STOA_GL_CALL(glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D,
-                                                m_colorTextures.back().id(), 0));
+                                                m_colorTextures.back()->id(), 0));
             drawBuffers.push_back(attachment);
         }
         STOA_GL_CALL(glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data()));
@@ -76,10 +99,21 @@ Framebuffer::Framebuffer(int width, int height, const FramebufferOptions& option
         STOA_GL_CALL(glReadBuffer(GL_NONE));
     }
 
-    if (options.depthTexture) {
-        m_depthTexture = Texture2D::empty(width, height, GL_DEPTH_COMPONENT24,
-                                          TextureOptions{/*mipmaps=*/false, GL_CLAMP_TO_EDGE, /*linear=*/false});
-        STOA_GL_CALL(glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m_depthTexture.id(), 0));
+    if (options.depthAttachment || options.depthTexture || options.depthStencilTexture) {
+        if (options.depthAttachment) {
+            checkShared(*options.depthAttachment, "depth");
+            STOA_ASSERT(isDepthFormat(options.depthAttachment->internalFormat()),
+                        "Framebuffer(): options.depthAttachment is not a depth texture. Share another "
+                        "framebuffer's depthAttachment(), or make one with Texture2D::empty(w, h, GL_DEPTH24_STENCIL8).");
+            m_depthTexture = options.depthAttachment;
+        } else {
+            const GLenum format = options.depthStencilTexture ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT24;
+            m_depthTexture = std::make_shared<Texture2D>(Texture2D::empty(
+                width, height, format, TextureOptions{/*mipmaps=*/false, GL_CLAMP_TO_EDGE, /*linear=*/false}));
+        }
+        const GLenum attachment =
+            hasStencil(m_depthTexture->internalFormat()) ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
+        STOA_GL_CALL(glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, m_depthTexture->id(), 0));
     } else if (options.depth) {
         STOA_GL_CALL(glGenRenderbuffers(1, &m_depthRenderbuffer));
         STOA_GL_CALL(glBindRenderbuffer(GL_RENDERBUFFER, m_depthRenderbuffer));
@@ -90,8 +124,8 @@ Framebuffer::Framebuffer(int width, int height, const FramebufferOptions& option
     }
 
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousDraw));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previousRead));
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, previousDraw);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, previousRead);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         destroy();
         throw std::runtime_error("Framebuffer(" + std::to_string(width) + "x" + std::to_string(height) +
@@ -102,11 +136,14 @@ Framebuffer::Framebuffer(int width, int height, const FramebufferOptions& option
 
 void Framebuffer::destroy() {
     if (m_depthRenderbuffer) glDeleteRenderbuffers(1, &m_depthRenderbuffer);
-    if (m_id) glDeleteFramebuffers(1, &m_id);
+    if (m_id) {
+        StateCache::current().framebufferDeleted(m_id);
+        glDeleteFramebuffers(1, &m_id);
+    }
     m_depthRenderbuffer = 0;
     m_id = 0;
     m_colorTextures.clear();
-    m_depthTexture = Texture2D();
+    m_depthTexture.reset();
 }
 
 Framebuffer::~Framebuffer() { destroy(); }
@@ -137,14 +174,13 @@ GLuint Framebuffer::release() { return std::exchange(m_id, 0); }
 void Framebuffer::bind() const {
     STOA_ASSERT(m_id != 0, "Framebuffer::bind(): the framebuffer is empty (default-constructed, moved from or "
                            "released). Create it with Framebuffer(width, height).");
-    STOA_GL_CALL(glBindFramebuffer(GL_FRAMEBUFFER, m_id));
-    STOA_GL_CALL(glViewport(0, 0, m_width, m_height));
+    StateCache::current().bindFramebuffer(m_id);
 }
 
-void Framebuffer::bindDefault() { STOA_GL_CALL(glBindFramebuffer(GL_FRAMEBUFFER, 0)); }
+void Framebuffer::bindDefault() { StateCache::current().bindFramebuffer(0); }
 
 void Framebuffer::bindForReading(int attachment) const {
-    STOA_GL_CALL(glBindFramebuffer(GL_READ_FRAMEBUFFER, m_id));
+    StateCache::current().bindReadFramebuffer(m_id);
     if (attachment >= 0) STOA_GL_CALL(glReadBuffer(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(attachment)));
 }
 
@@ -156,13 +192,13 @@ void Framebuffer::readPixels(int attachment, int x, int y, int width, int height
                 "Framebuffer::readPixels(): no such colour attachment. Count the entries of options.colorFormats.");
     STOA_ASSERT(x >= 0 && y >= 0 && x + width <= m_width && y + height <= m_height,
                 "Framebuffer::readPixels(): the rectangle lies outside the framebuffer.");
-    const GLint previous = boundFramebuffer(GL_READ_FRAMEBUFFER_BINDING);
+    const GLuint previous = StateCache::current().readFramebuffer();
     bindForReading(depthRead ? -1 : attachment);
     STOA_GL_CALL(glPixelStorei(GL_PACK_ALIGNMENT, 1));
     STOA_GL_CALL(glReadPixels(x, y, width, height, format, type, out));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     if (!depthRead && !m_colorTextures.empty()) glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previous));
+    StateCache::current().bindReadFramebuffer(previous);
 }
 
 Image Framebuffer::readColor(int attachment) const {
@@ -173,7 +209,7 @@ Image Framebuffer::readColor(int attachment) const {
 }
 
 std::vector<float> Framebuffer::readDepth() const {
-    STOA_ASSERT(m_depthRenderbuffer || m_depthTexture.id(),
+    STOA_ASSERT(m_depthRenderbuffer || m_depthTexture,
                 "Framebuffer::readDepth(): this framebuffer has no depth. Create it with options.depth = true.");
     std::vector<float> bottomUp(static_cast<std::size_t>(m_width) * static_cast<std::size_t>(m_height));
     readPixels(-1, 0, 0, m_width, m_height, GL_DEPTH_COMPONENT, GL_FLOAT, bottomUp.data());
@@ -187,19 +223,24 @@ std::vector<float> Framebuffer::readDepth() const {
 
 GLuint Framebuffer::colorTexture(int attachment) const {
     if (attachment < 0 || attachment >= static_cast<int>(m_colorTextures.size())) return 0;
-    return m_colorTextures[static_cast<std::size_t>(attachment)].id();
+    return m_colorTextures[static_cast<std::size_t>(attachment)]->id();
+}
+
+std::shared_ptr<Texture2D> Framebuffer::colorAttachment(int attachment) const {
+    if (attachment < 0 || attachment >= static_cast<int>(m_colorTextures.size())) return nullptr;
+    return m_colorTextures[static_cast<std::size_t>(attachment)];
 }
 
 void Framebuffer::bindColorTexture(int unit, int attachment) const {
     STOA_ASSERT(attachment >= 0 && attachment < static_cast<int>(m_colorTextures.size()),
                 "Framebuffer::bindColorTexture(): no such colour attachment. Count options.colorFormats.");
-    m_colorTextures[static_cast<std::size_t>(attachment)].bind(unit);
+    m_colorTextures[static_cast<std::size_t>(attachment)]->bind(unit);
 }
 
 void Framebuffer::bindDepthTexture(int unit) const {
-    STOA_ASSERT(m_depthTexture.id() != 0, "Framebuffer::bindDepthTexture(): no depth texture. "
-                                          "Create the framebuffer with options.depthTexture = true.");
-    m_depthTexture.bind(unit);
+    STOA_ASSERT(m_depthTexture != nullptr, "Framebuffer::bindDepthTexture(): no depth texture. "
+                                           "Create the framebuffer with options.depthTexture = true.");
+    m_depthTexture->bind(unit);
 }
 
 } // namespace stoa

@@ -8,7 +8,8 @@
 
 namespace stoa {
 
-GpuMesh::GpuMesh(const Mesh& mesh) : m_indexCount(mesh.indices.size()), m_vertexCount(mesh.vertices.size()) {
+GpuMesh::GpuMesh(const Mesh& mesh)
+    : m_indexCount(mesh.indices.size()), m_vertexCount(mesh.vertices.size()), m_bounds(boundsOf(mesh)) {
     m_vertices.upload(mesh.vertices);
     m_vertexArray.attribute(kPositionLocation, m_vertices, 3, GL_FLOAT, sizeof(Vertex), offsetof(Vertex, position));
     m_vertexArray.attribute(kNormalLocation, m_vertices, 3, GL_FLOAT, sizeof(Vertex), offsetof(Vertex, normal));
@@ -22,6 +23,18 @@ GpuMesh::GpuMesh(const Mesh& mesh) : m_indexCount(mesh.indices.size()), m_vertex
 }
 
 void GpuMesh::draw() const { drawInstanced(1); }
+
+void GpuMesh::setInstanceAttributes(const Buffer& instances, std::size_t stride, std::size_t modelOffset,
+                                    std::size_t colorOffset) {
+    for (GLuint column = 0; column < 4; ++column) {
+        const GLuint location = kInstanceModelLocation + column;
+        m_vertexArray.attribute(location, instances, 4, GL_FLOAT, stride, modelOffset + column * 4 * sizeof(float));
+        m_vertexArray.divisor(location, 1);
+    }
+    m_vertexArray.attribute(kInstanceColorLocation, instances, 4, GL_FLOAT, stride, colorOffset);
+    m_vertexArray.divisor(kInstanceColorLocation, 1);
+    VertexArray::unbind();
+}
 
 void GpuMesh::drawInstanced(int instances) const {
     STOA_ASSERT(m_vertexArray.id() != 0, "GpuMesh::draw(): the mesh was moved from. Draw the GpuMesh it moved to.");

@@ -2,6 +2,7 @@
 
 #include <stoa/core/Assert.hpp>
 #include <stoa/gl/Debug.hpp>
+#include <stoa/gl/StateCache.hpp>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -112,7 +113,10 @@ Program Program::fromSources(const ShaderSource& vertex, const ShaderSource& fra
 }
 
 Program::~Program() {
-    if (m_id) glDeleteProgram(m_id);
+    if (m_id) {
+        StateCache::current().programDeleted(m_id);
+        glDeleteProgram(m_id);
+    }
 }
 
 Program::Program(Program&& other) noexcept
@@ -127,7 +131,10 @@ Program::Program(Program&& other) noexcept
 
 Program& Program::operator=(Program&& other) noexcept {
     if (this != &other) {
-        if (m_id) glDeleteProgram(m_id);
+        if (m_id) {
+            StateCache::current().programDeleted(m_id);
+            glDeleteProgram(m_id);
+        }
         m_id = std::exchange(other.m_id, 0);
         m_stages = std::move(other.m_stages);
         m_searchPath = std::move(other.m_searchPath);
@@ -148,7 +155,7 @@ GLuint Program::release() {
 void Program::use() const {
     STOA_ASSERT(m_id != 0, "Program::use(): the program is empty (default-constructed, moved from or released). "
                            "Build it with Program::fromFiles() and keep it alive while you draw with it.");
-    STOA_GL_CALL(glUseProgram(m_id));
+    StateCache::current().useProgram(m_id);
 }
 
 GLint Program::uniformLocation(const std::string& name) const {
@@ -187,7 +194,10 @@ bool Program::reloadIfChanged() {
     for (const ShaderSource& source : sources) pointers.push_back(&source);
     try {
         Program fresh = link(pointers);
-        if (m_id) glDeleteProgram(m_id);
+        if (m_id) {
+            StateCache::current().programDeleted(m_id);
+            glDeleteProgram(m_id);
+        }
         m_id = std::exchange(fresh.m_id, 0);
         m_files = std::move(fresh.m_files);
         m_stubs = std::move(fresh.m_stubs);
@@ -203,15 +213,29 @@ bool Program::reloadIfChanged() {
 namespace {
 
 // Every setter: the location (cached), nothing for a name the program does not
-// use, else make the program current and set. Checked mode names a type
-// mismatch (GL_INVALID_OPERATION: set(float) on an int uniform, say).
+// use, else set it with this program current and give the previous one back
+// (GL 3.3 has no glProgramUniform). Checked mode names a type mismatch
+// (GL_INVALID_OPERATION: set(float) on an int uniform, say).
 template <typename Apply>
 void setUniform(const Program& program, const std::string& name, Apply apply) {
     const GLint location = program.uniformLocation(name);
     if (location < 0) return;
-    program.use();
+    StateCache& cache = StateCache::current();
+    const GLuint previous = cache.program();
+    cache.useProgram(program.id());
     apply(location);
     STOA_GL_CHECK(("Program::set(\"" + name + "\")").c_str());
+    cache.useProgram(previous);
+}
+
+template <typename Apply>
+void setUniformAt(const Program& program, GLint location, Apply apply) {
+    if (location < 0) return;
+    STOA_ASSERT(StateCache::current().program() == program.id(),
+                "Program::setAt(): the program is not in use. Call program.use() before the draw loop "
+                "(or set by name with Program::set(), which switches and switches back).");
+    apply(location);
+    STOA_GL_CHECK("Program::setAt()");
 }
 
 } // namespace
@@ -264,6 +288,33 @@ void Program::set(const std::string& name, const std::vector<glm::mat4>& values)
     const auto count = static_cast<GLsizei>(values.size());
     setUniform(*this, name,
                [&](GLint at) { glUniformMatrix4fv(at, count, GL_FALSE, glm::value_ptr(values[0])); });
+}
+
+void Program::setAt(GLint location, int value) const {
+    setUniformAt(*this, location, [&](GLint at) { glUniform1i(at, value); });
+}
+void Program::setAt(GLint location, float value) const {
+    setUniformAt(*this, location, [&](GLint at) { glUniform1f(at, value); });
+}
+void Program::setAt(GLint location, bool value) const { setAt(location, value ? 1 : 0); }
+void Program::setAt(GLint location, const glm::vec3& value) const {
+    setUniformAt(*this, location, [&](GLint at) { glUniform3fv(at, 1, glm::value_ptr(value)); });
+}
+void Program::setAt(GLint location, const glm::vec4& value) const {
+    setUniformAt(*this, location, [&](GLint at) { glUniform4fv(at, 1, glm::value_ptr(value)); });
+}
+void Program::setAt(GLint location, const glm::mat3& value) const {
+    setUniformAt(*this, location, [&](GLint at) { glUniformMatrix3fv(at, 1, GL_FALSE, glm::value_ptr(value)); });
+}
+void Program::setAt(GLint location, const glm::mat4& value) const {
+    setUniformAt(*this, location, [&](GLint at) { glUniformMatrix4fv(at, 1, GL_FALSE, glm::value_ptr(value)); });
+}
+
+void Program::bindUniformBlock(const std::string& blockName, GLuint binding) const {
+    STOA_ASSERT(m_id != 0, "Program::bindUniformBlock(): the program is empty. Build it with Program::fromFiles().");
+    const GLuint index = glGetUniformBlockIndex(m_id, blockName.c_str());
+    if (index == GL_INVALID_INDEX) return;
+    STOA_GL_CALL(glUniformBlockBinding(m_id, index, binding));
 }
 
 } // namespace stoa

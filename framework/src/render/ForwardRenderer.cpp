@@ -1,49 +1,76 @@
 #include <stoa/camera/Camera.hpp>
 #include <stoa/core/Assert.hpp>
-#include <stoa/gl/OpenGL.hpp>
+#include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/gl/RenderPass.hpp>
+#include <stoa/lab/LabHooks.hpp>
 #include <stoa/render/ForwardRenderer.hpp>
+#include <stoa/render/FrameUniforms.hpp>
+#include <stoa/render/ObjectUniforms.hpp>
 #include <stoa/scene/Scene.hpp>
 
 #include <algorithm>
-#include <string>
 
 namespace stoa {
 
+ForwardRenderer::ForwardRenderer() = default;
+ForwardRenderer::~ForwardRenderer() = default;
+ForwardRenderer::ForwardRenderer(ForwardRenderer&&) noexcept = default;
+ForwardRenderer& ForwardRenderer::operator=(ForwardRenderer&&) noexcept = default;
+
+const ObjectUniforms& ForwardRenderer::uniformsFor(const Program& program) const {
+    if (!m_uniforms || m_uniformsProgram != &program || m_uniformsProgramId != program.id()) {
+        m_uniforms = std::make_unique<ObjectUniforms>(program);
+        m_uniformsProgram = &program;
+        m_uniformsProgramId = program.id();
+        program.bindUniformBlock(FrameUniforms::kBlockName, FrameUniforms::kBinding);
+    }
+    return *m_uniforms;
+}
+
 void ForwardRenderer::render(const Scene& scene, const Camera& camera, const Program& program, glm::ivec2 size) const {
     STOA_ASSERT(size.x > 0 && size.y > 0, "ForwardRenderer::render(): the viewport must not be empty");
-    glViewport(0, 0, size.x, size.y);
-    glClearColor(clearColor.r, clearColor.g, clearColor.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
+    PassDescription pass = passInto(size, state);
+    pass.clear.color = pass.clear.depth = true;
+    pass.clear.colorValue = glm::vec4(clearColor, 1.0f);
+    beginPass(pass);
 
     program.use();
-    program.set("uView", camera.viewMatrix());
-    program.set("uProjection", camera.projectionMatrix(static_cast<float>(size.x) / static_cast<float>(size.y)));
-    program.set("uCameraPosition", camera.eyePosition());
-    program.set("uAmbient", scene.ambient);
-
-    const int directionalCount =
-        std::min(static_cast<int>(scene.directionalLights.size()), Scene::kMaxDirectionalLights);
-    program.set("uDirectionalLightCount", directionalCount);
-    for (int i = 0; i < directionalCount; ++i) {
-        const std::string prefix = "uDirectionalLights[" + std::to_string(i) + "].";
-        program.set(prefix + "direction", scene.directionalLights[i].direction);
-        program.set(prefix + "color", scene.directionalLights[i].color);
+    const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+    if (!m_frame) m_frame = std::make_unique<FrameUniforms>();
+    FrameBlock block = FrameUniforms::blockFor(camera, aspect, scene);
+    if (hooks && hooks->cullLights) {
+        // The lab's light culling picks which point lights this frame shades with.
+        const std::vector<int> kept = hooks->cullLights(scene.pointLights, camera);
+        int count = 0;
+        for (int index : kept) {
+            if (index < 0 || index >= static_cast<int>(scene.pointLights.size()) || count == Scene::kMaxPointLights)
+                continue;
+            const PointLight& light = scene.pointLights[static_cast<std::size_t>(index)];
+            block.pointLights[count++] = {light.position, 0.0f, light.color, 0.0f, light.attenuation, 0.0f};
+        }
+        block.pointLightCount = count;
     }
-    const int pointCount = std::min(static_cast<int>(scene.pointLights.size()), Scene::kMaxPointLights);
-    program.set("uPointLightCount", pointCount);
-    for (int i = 0; i < pointCount; ++i) {
-        const std::string prefix = "uPointLights[" + std::to_string(i) + "].";
-        program.set(prefix + "position", scene.pointLights[i].position);
-        program.set(prefix + "color", scene.pointLights[i].color);
-        program.set(prefix + "attenuation", scene.pointLights[i].attenuation);
-    }
+    m_frame->update(block);
+    m_frame->bind();
+    const ObjectUniforms& uniforms = uniformsFor(program);
 
-    for (const auto& object : scene.objects()) object->draw(program);
+    m_drawList.clear();
+    for (const auto& object : scene.objects()) object->addDraws(m_drawList);
+    m_drawn = m_culled = 0;
+    const glm::mat4 viewProjection = block.projection * block.view;
+    for (const DrawItem& item : m_drawList) {
+        if (hooks && hooks->isVisible) {
+            const Bounds world = transformed(item.mesh->bounds(), item.model);
+            if (!hooks->isVisible(world.sphere, viewProjection)) {
+                ++m_culled;
+                continue;
+            }
+        }
+        uniforms.apply(item);
+        item.mesh->draw();
+        ++m_drawn;
+    }
 }
 
 } // namespace stoa

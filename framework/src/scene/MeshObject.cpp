@@ -1,6 +1,5 @@
 #include <stoa/core/Assert.hpp>
 #include <stoa/gl/GpuMesh.hpp>
-#include <stoa/gl/Program.hpp>
 #include <stoa/gl/TextureCache.hpp>
 #include <stoa/scene/MeshObject.hpp>
 
@@ -9,9 +8,10 @@ namespace stoa {
 MeshObject::MeshObject(std::shared_ptr<const GpuMesh> mesh, Material material)
     : material(std::move(material)), m_mesh(std::move(mesh)) {
     STOA_ASSERT(m_mesh != nullptr, "MeshObject::MeshObject(): pass a mesh (std::make_shared<GpuMesh>(shapes::cube()))");
+    resolveMaps();
 }
 
-void MeshObject::refreshMap(const std::string& path, BoundMap& map) {
+void MeshObject::resolve(const std::string& path, ResolvedMap& map) {
     if (path.empty()) {
         map = {};
     } else if (map.path != path || !map.texture) {
@@ -19,27 +19,28 @@ void MeshObject::refreshMap(const std::string& path, BoundMap& map) {
     }
 }
 
-void MeshObject::bindMap(const Program& program, const BoundMap& map, int unit, const char* sampler,
-                         const char* flag) {
-    // The sampler gets its unit even without a map, so that two samplers of
-    // different types never share unit 0 (a draw error in GL 3.3).
-    program.set(sampler, unit);
-    program.set(flag, map.texture != nullptr);
-    if (map.texture) map.texture->bind(unit);
+void MeshObject::resolveMaps() {
+    // Both loaded before anything is drawn: creating a texture binds it on
+    // the active unit, which must not happen between binding maps and drawing.
+    resolve(material.diffuseMap, m_diffuseMap);
+    resolve(material.specularMap, m_specularMap);
 }
 
-void MeshObject::draw(const Program& program) const {
-    program.set("uModel", modelMatrix());
-    program.set("uNormalMatrix", normalMatrix());
-    program.set("uMaterial.ambient", material.ambient);
-    program.set("uMaterial.diffuse", material.diffuse);
-    program.set("uMaterial.specular", material.specular);
-    program.set("uMaterial.shininess", material.shininess);
-    refreshMap(material.diffuseMap, m_diffuseMap);
-    refreshMap(material.specularMap, m_specularMap);
-    bindMap(program, m_diffuseMap, kDiffuseMapUnit, "uDiffuseMap", "uHasDiffuseMap");
-    bindMap(program, m_specularMap, kSpecularMapUnit, "uSpecularMap", "uHasSpecularMap");
-    m_mesh->draw();
+std::optional<Bounds> MeshObject::localBounds() const { return m_mesh->bounds(); }
+
+void MeshObject::addDraws(DrawList& list) const {
+    STOA_ASSERT(material.diffuseMap == m_diffuseMap.path && material.specularMap == m_specularMap.path,
+                "MeshObject::addDraws(): material.diffuseMap or specularMap changed after the object was made. "
+                "Call resolveMaps() after changing them (maps load when the scene is built, not while drawing).");
+    DrawItem item;
+    item.mesh = m_mesh.get();
+    item.model = modelMatrix();
+    item.normalMatrix = normalMatrix();
+    item.material = &material;
+    item.diffuseMap = m_diffuseMap.texture.get();
+    item.specularMap = m_specularMap.texture.get();
+    item.object = this;
+    list.push_back(item);
 }
 
 } // namespace stoa

@@ -8,11 +8,11 @@
 //           llvmpipe where Mesa also drives a GPU, it sets
 //           LIBGL_ALWAYS_SOFTWARE=1 in the environment unless already set.
 // There is no default framebuffer to speak of (OSMesa's is 1x1, EGL has none):
-// render into a stoa::gl::Framebuffer and read it back from there.
+// render into a stoa::Framebuffer and read it back from there.
 //
 //   stoa::HeadlessContext context;               // $STOA_HEADLESS, else OSMesa, else EGL
-//   stoa::gl::Framebuffer target(256, 256);
-//   target.bind();
+//   stoa::Framebuffer target(256, 256);
+//   stoa::beginPass(stoa::passInto(target));     // RenderPass.hpp
 //   ...draw...
 //   stoa::Image frame = target.readColor();
 

@@ -9,6 +9,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <memory>
 #include <string>
 
 namespace stoa {
@@ -21,7 +22,11 @@ public:
     virtual void display(glm::ivec2 size) = 0;
     /// Called at fixed steps of simulated time (FixedStepClock), with what is held.
     virtual void update(float seconds, const InputState& input) { (void)seconds; (void)input; }
-    /// A key went down: ASCII, lower case for letters; 27 is Escape.
+    /// Every event, before the callbacks below; `input` already includes it.
+    virtual void event(const InputEvent& event, const InputState& input) { (void)event; (void)input; }
+    /// Shorthands for the common cases, called after event():
+    /// a key below 256 went down (a character's key, lower case for letters; Tab, Enter,
+    /// Backspace, Delete; 27 is Escape), before its Text event.
     virtual void keyPressed(unsigned char key, const InputState& input) { (void)key; (void)input; }
     virtual void mouseDragged(glm::vec2 deltaPixels, const InputState& input) { (void)deltaPixels; (void)input; }
     virtual void mouseWheel(int notches) { (void)notches; }
@@ -51,6 +56,13 @@ public:
     glm::ivec2 size() const;
     /// Presents the frame just drawn (run() does this after display()).
     void swapBuffers();
+
+    /// The event loop's state (input, clock, handler), owned here and reached
+    /// by GLUT's plain-function callbacks while this window lives.
+    struct State;
+
+private:
+    std::unique_ptr<State> m_state;
 };
 
 } // namespace stoa

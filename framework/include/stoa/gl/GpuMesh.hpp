@@ -11,6 +11,7 @@
 //   program.use();
 //   cube.draw();
 
+#include <stoa/geometry/Bounds.hpp>
 #include <stoa/gl/Buffer.hpp>
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/VertexArray.hpp>
@@ -45,6 +46,17 @@ public:
 
     std::size_t indexCount() const { return m_indexCount; }  // 3 per triangle; 0 without indices
     std::size_t vertexCount() const { return m_vertexCount; }
+    /// The mesh's box and sphere in object space (boundsOf(), kept from the upload).
+    const Bounds& bounds() const { return m_bounds; }
+
+    /// Per-instance attributes for drawInstanced(), advanced once per instance:
+    /// a mat4 model matrix (locations 4-7, one column each) and a vec4 colour
+    /// (location 8), `stride` bytes apart in `instances`, from `offset`. The
+    /// buffer must outlive the draws (InstancedMesh keeps both together).
+    static constexpr GLuint kInstanceModelLocation = 4;   // 4, 5, 6, 7
+    static constexpr GLuint kInstanceColorLocation = 8;
+    void setInstanceAttributes(const Buffer& instances, std::size_t stride, std::size_t modelOffset,
+                               std::size_t colorOffset);
 
 private:
     VertexArray m_vertexArray;
@@ -52,6 +64,7 @@ private:
     Buffer m_indices{GL_ELEMENT_ARRAY_BUFFER};
     std::size_t m_indexCount = 0;
     std::size_t m_vertexCount = 0;
+    Bounds m_bounds;
 };
 
 } // namespace stoa

@@ -3,8 +3,16 @@
 // file and line, cached uniform locations, and reloading when a file changes.
 //
 //   Program program = Program::fromFiles("lit.vert", "lit.frag", {labDir, paths::shadersDir()});
-//   program.set("uModel", modelMatrix);   // makes the program current, then sets
+//   program.use();
+//   program.set("uModel", modelMatrix);   // by name: the location is looked up once and cached
 //   mesh.draw();
+//
+// Setting a uniform never changes which program is in use: set() on a program
+// that is not current makes it current, sets, and makes the previous one
+// current again (the StateCache knows which, without asking GL). Draw with
+// the program you use(). In a loop over many objects, look the locations up
+// once (uniformLocation()) and set them with setAt(), which needs the program
+// in use.
 //   if (program.reloadIfChanged()) ...    // each frame in an interactive app
 
 #include <stoa/gl/OpenGL.hpp>
@@ -49,16 +57,17 @@ public:
     Program(Program&& other) noexcept;
     Program& operator=(Program&& other) noexcept;
 
-    /// glUseProgram. Asserts that the program is not empty.
+    /// Makes this program the one draws use (through the StateCache: no call
+    /// when it is in use already). Asserts that the program is not empty.
     void use() const;
 
     /// The uniform's location, asked once and cached; -1 when the program has
     /// no active uniform of that name (the compiler drops unused ones).
     GLint uniformLocation(const std::string& name) const;
 
-    /// Makes this program current and sets a uniform. A name the program does
-    /// not use is ignored (location -1), so a shader can drop a uniform while
-    /// you edit it. Arrays: "uLights[2].color", or the vector overloads from
+    /// Sets a uniform of this program; the program in use stays in use (see
+    /// above). A name the program does not use is ignored (location -1), so a
+    /// shader can drop a uniform while you edit it. Arrays: "uLights[2].color", or the vector overloads from
     /// element 0 ("uKernel" or "uKernel[0]").
     void set(const std::string& name, int value) const;
     void set(const std::string& name, std::uint32_t value) const;
@@ -82,6 +91,21 @@ public:
     /// and the result is false: a compile error is retried once a file changes
     /// again, a missing file or include at every call until it appears.
     bool reloadIfChanged();
+
+    /// Sets the uniform at `location` (from uniformLocation(); -1 is ignored).
+    /// The program must be in use (checked: asserts otherwise). For per-object
+    /// uniforms in a draw loop: no name lookup, no program switch.
+    void setAt(GLint location, int value) const;
+    void setAt(GLint location, float value) const;
+    void setAt(GLint location, bool value) const;
+    void setAt(GLint location, const glm::vec3& value) const;
+    void setAt(GLint location, const glm::vec4& value) const;
+    void setAt(GLint location, const glm::mat3& value) const;
+    void setAt(GLint location, const glm::mat4& value) const;
+
+    /// Binds uniform block `blockName` to binding point `binding` (a
+    /// UniformBuffer bound there feeds it). Ignored when the program has no such block.
+    void bindUniformBlock(const std::string& blockName, GLuint binding) const;
     /// The message of the last failed reload; empty after a successful one.
     const std::string& lastError() const { return m_lastError; }
 

@@ -5,6 +5,7 @@
 
 #include <stoa/app/Input.hpp>
 #include <stoa/lab/PropertyCheck.hpp>
+#include <stoa/lab/LabHooks.hpp>
 
 #include <glm/vec2.hpp>
 
@@ -56,6 +57,21 @@ public:
     virtual void toggleCamera() {}
     /// A key the app did not handle; return true when the lab used it.
     virtual bool keyPressed(unsigned char key) { (void)key; return false; }
+    /// Every event of the window (keys down and up, special keys, mouse
+    /// buttons, motion, wheel, text, resize), before the app's own handling of
+    /// it; return true when the lab used it, and the app leaves it alone (no
+    /// camera move, no app key; Escape still quits). Runs under the stub guard.
+    virtual bool handleEvent(const InputEvent& event) { (void)event; return false; }
+    /// Advances the lab's simulation by `seconds` of simulated time: called in
+    /// the window at fixed steps (FixedStepClock), after the camera moved.
+    /// Graded frames do not depend on it.
+    virtual void update(float seconds) { (void)seconds; }
+    /// Draws the lab's own controls into the window's UI panel (F1), between
+    /// ImGui::Begin() and End(); nothing by default. Only in builds with Dear ImGui.
+    virtual void drawUi() {}
+    /// The lab's hooks into the framework (LabHooks.hpp: visibility, light
+    /// culling, agent step), or nullptr for none (labs 01-05).
+    virtual const LabHooks* hooks() const { return nullptr; }
     /// Lines added to the window's key help, e.g. "f  toggle facet normals".
     virtual std::vector<std::string> keyHelp() const { return {}; }
     /// Runs the property check `spec.check` (a case with a `check` key, PropertyCheck.hpp),

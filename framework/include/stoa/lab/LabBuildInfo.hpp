@@ -12,6 +12,10 @@ struct LabBuildInfo {
     const char* track;         // "labs", "solutions" or "mistake:NAME"
     const char* labDirectory;  // labs/01_transforms (its cases.ini)
     const char* shaderPath;    // folders separated by '|'
+    /// Where the lab's reference pictures are (<case>.png), for the window's
+    /// comparison ('g'); "" when the build has none. The build decides
+    /// (STOA_REFERENCES_DIR), so the framework never names the grader's folders.
+    const char* referenceDirectory = "";
 };
 
 /// This program's build info (the generated definition).

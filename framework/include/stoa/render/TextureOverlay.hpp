@@ -24,8 +24,9 @@ public:
     TextureOverlay() = default;
 
     /// Draws 4 vertices as a triangle strip with `program` into `rectangle`
-    /// (x, y from the bottom-left corner, width, height; pixels), depth test off.
-    /// Restores the viewport and the depth test as they were.
+    /// (x, y from the bottom-left corner, width, height; pixels) of the bound
+    /// framebuffer, as a pass of its own (RenderState::overlay(): no depth
+    /// test, nothing culled). The pass after it states its own viewport and state.
     void draw(const Program& program, const glm::ivec4& rectangle) const;
 
 private:

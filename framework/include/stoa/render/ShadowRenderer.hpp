@@ -1,13 +1,20 @@
 #pragma once
-// Lab 05's two passes put together: the student's depth pass into the shadow
-// map, then the scene lit by the one shadow-casting light through
+// Shadow mapping's passes put together (lab 05): the lab's depth pass into the
+// shadow map, then the scene lit by the one shadow-casting light through
 // shaders/shadows/shadowed.frag, and optionally the map in a corner. With
-// cascades, one map per slice of the camera's frustum (the student's
-// cascades.cpp) and shaders/shadows/cascaded.frag. The lab app and
+// cascades, one map per slice of the camera's frustum and
+// shaders/shadows/cascaded.frag. Lab 05's app and
 // tests/benchmarks/shadow_benchmark.cpp both draw through it.
+//
+// The functions it calls that are the student's (ShadowMapping.hpp) reach it
+// at run time, as ShadowLabCode, from the program that links them: this file
+// names none of them, so the labs before lab 05 link without them.
+//
+//   ShadowRenderer renderer(depth, shadowed, mapView, ShadowLabCode::fromLab05());   // in lab 05's program
 
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/render/ForwardRenderer.hpp>
+#include <stoa/render/ShadowMapping.hpp>
 #include <stoa/render/TextureOverlay.hpp>
 
 #include <glm/mat4x4.hpp>
@@ -15,6 +22,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -59,11 +67,30 @@ struct ShadowSettings {
     CascadeSettings cascades;
 };
 
+/// Lab 05's functions (ShadowMapping.hpp), handed to the renderer at run time.
+struct ShadowLabCode {
+    std::function<void(const Scene&, const Framebuffer&, const Program&, const glm::mat4&)> renderShadowPass;
+    std::function<std::vector<float>(float, float, int, float)> cascadeSplits;
+    std::function<std::array<glm::vec3, 8>(const glm::mat4&, float, float, float, float)> frustumSliceCorners;
+    std::function<glm::mat4(const glm::vec3&, const std::array<glm::vec3, 8>&, int, const glm::vec3&,
+                            const glm::vec3&)>
+        cascadeLightMatrix;
+
+    /// The four as the calling program links them. Inline, so that only a
+    /// program that calls it (lab 05's) needs lab 05's code.
+    static ShadowLabCode fromLab05() {
+        return {&stoa::renderShadowPass, &stoa::cascadeSplits, &stoa::frustumSliceCorners,
+                &stoa::cascadeLightMatrix};
+    }
+};
+
 class ShadowRenderer {
 public:
     /// The three programs: shadows/depth.*, shadows/shadowed.*, shadows/depth_view.*.
-    /// They must outlive the renderer. Needs a current context.
-    ShadowRenderer(const Program& depthProgram, const Program& shadowedProgram, const Program& mapViewProgram);
+    /// They must outlive the renderer. `code`: lab 05's functions (the
+    /// cascade ones may be unset while no case asks for cascades). Needs a current context.
+    ShadowRenderer(const Program& depthProgram, const Program& shadowedProgram, const Program& mapViewProgram,
+                   ShadowLabCode code);
 
     /// Both passes (the first only when settings.enabled), into the framebuffer
     /// that is bound when called, over a viewport of `size` pixels.
@@ -94,8 +121,10 @@ private:
     /// Both passes with one map per slice of the camera's frustum.
     void renderCascaded(const Scene& scene, const Camera& camera, glm::ivec2 size, const ShadowLight& light,
                         const ShadowSettings& settings);
+    static void afterStudentPass(GLuint target);
     void drawMapView(const Framebuffer& map, const ShadowLight& light, const glm::ivec4& rectangle);
 
+    ShadowLabCode m_code;
     const Program& m_depthProgram;
     const Program& m_shadowedProgram;
     const Program& m_mapViewProgram;

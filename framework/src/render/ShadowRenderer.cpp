@@ -1,15 +1,16 @@
-#include "shadow_renderer.hpp"
-
 #include <stoa/camera/Camera.hpp>
 #include <stoa/core/Assert.hpp>
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/gl/StateCache.hpp>
 #include <stoa/render/ShadowMapping.hpp>
+#include <stoa/render/ShadowRenderer.hpp>
 #include <stoa/scene/Scene.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace stoa {
 
@@ -22,9 +23,25 @@ const char* toString(PcfMode mode) {
     return "?";
 }
 
+// The student's pass may have set GL state directly (glEnable, glUseProgram):
+// the cache forgets what it knew, and the app's target is bound again.
+void ShadowRenderer::afterStudentPass(GLuint target) {
+    StateCache& cache = StateCache::current();
+    cache.forget();
+    cache.bindFramebuffer(target);
+    cache.useProgram(0);
+}
+
 ShadowRenderer::ShadowRenderer(const Program& depthProgram, const Program& shadowedProgram,
-                               const Program& mapViewProgram)
-    : m_depthProgram(depthProgram), m_shadowedProgram(shadowedProgram), m_mapViewProgram(mapViewProgram) {}
+                               const Program& mapViewProgram, ShadowLabCode code)
+    : m_code(std::move(code)),
+      m_depthProgram(depthProgram),
+      m_shadowedProgram(shadowedProgram),
+      m_mapViewProgram(mapViewProgram) {
+    STOA_ASSERT(m_code.renderShadowPass != nullptr,
+                "ShadowRenderer(): ShadowLabCode::renderShadowPass is not set. Pass ShadowLabCode::fromLab05() "
+                "from a program that links lab 05's code.");
+}
 
 void ShadowRenderer::renderShadowMap(const Scene& scene, const ShadowLight& light, int mapSize) {
     STOA_ASSERT(mapSize > 0, "ShadowRenderer::renderShadowMap(): the map needs at least one texel per side");
@@ -35,11 +52,10 @@ void ShadowRenderer::renderShadowMap(const Scene& scene, const ShadowLight& ligh
         m_shadowMap = Framebuffer(mapSize, mapSize, options);
     }
     // The lab draws into whatever the app bound (the window, or the headless
-    // target): remember it, since the depth pass binds the map.
-    GLint previous = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
-    renderShadowPass(scene, m_shadowMap, m_depthProgram, light.lightSpaceMatrix);
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous));
+    // target): remember it (the StateCache knows it), since the depth pass binds the map.
+    const GLuint previous = StateCache::current().drawFramebuffer();
+    m_code.renderShadowPass(scene, m_shadowMap, m_depthProgram, light.lightSpaceMatrix);
+    afterStudentPass(previous);
 }
 
 void ShadowRenderer::renderLit(const Scene& scene, const Camera& camera, glm::ivec2 size, const ShadowLight& light,
@@ -110,29 +126,30 @@ void ShadowRenderer::renderCascaded(const Scene& scene, const Camera& camera, gl
     const glm::vec3 sunDirection = scene.directionalLights.front().direction;
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     const float far = std::min(settings.cascades.far, camera.farPlane());
-    m_splits = cascadeSplits(camera.nearPlane(), far, count, settings.cascades.lambda);
+    STOA_ASSERT(m_code.cascadeSplits && m_code.frustumSliceCorners && m_code.cascadeLightMatrix,
+                "ShadowRenderer::render(): cascades need ShadowLabCode's cascade functions (ShadowLabCode::fromLab05())");
+    m_splits = m_code.cascadeSplits(camera.nearPlane(), far, count, settings.cascades.lambda);
     STOA_ASSERT(m_splits.size() == static_cast<std::size_t>(count) + 1,
                 "cascadeSplits(): must return count + 1 depths, near first and far last");
 
     const glm::mat4 view = camera.viewMatrix();
     const bool withMaps = settings.enabled || settings.showMap;
-    GLint previous = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    const GLuint previous = StateCache::current().drawFramebuffer();
     for (int i = 0; i < count && withMaps; ++i) {
         const auto cascade = static_cast<std::size_t>(i);
         const std::array<glm::vec3, 8> corners =
-            frustumSliceCorners(view, camera.fovYDegrees(), aspect, m_splits[cascade], m_splits[cascade + 1]);
+            m_code.frustumSliceCorners(view, camera.fovYDegrees(), aspect, m_splits[cascade], m_splits[cascade + 1]);
         m_cascadeMatrices[cascade] =
-            cascadeLightMatrix(sunDirection, corners, settings.mapSize, light.sceneMin, light.sceneMax);
+            m_code.cascadeLightMatrix(sunDirection, corners, settings.mapSize, light.sceneMin, light.sceneMax);
         if (m_cascadeMaps[cascade].width() != settings.mapSize) {
             FramebufferOptions options;
             options.color = false;
             options.depthTexture = true;
             m_cascadeMaps[cascade] = Framebuffer(settings.mapSize, settings.mapSize, options);
         }
-        renderShadowPass(scene, m_cascadeMaps[cascade], m_depthProgram, m_cascadeMatrices[cascade]);
+        m_code.renderShadowPass(scene, m_cascadeMaps[cascade], m_depthProgram, m_cascadeMatrices[cascade]);
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous));
+    afterStudentPass(previous);
 
     const Program& program = *m_cascadeProgram;
     glm::vec4 splitFar(far);

@@ -1,0 +1,395 @@
+#include "LabWindow.hpp"
+
+#include "CaseComparison.hpp"
+#include "HeadlessRender.hpp"
+
+#include <stoa/app/ImGuiLayer.hpp>
+#include <stoa/app/Window.hpp>
+#include <stoa/camera/Camera.hpp>
+#include <stoa/core/InputError.hpp>
+#include <stoa/core/NotImplemented.hpp>
+#include <stoa/gl/Debug.hpp>
+#include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/OpenGL.hpp>
+#include <stoa/gl/Program.hpp>
+#include <stoa/gl/Texture2D.hpp>
+#include <stoa/lab/LabApp.hpp>
+#include <stoa/render/TextureOverlay.hpp>
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <set>
+
+namespace stoa::detail {
+
+namespace {
+
+// A picture shown at about its size: no mipmaps, clamped.
+TextureOptions pictureOptions() {
+    TextureOptions options;
+    options.mipmaps = false;
+    options.wrap = GL_CLAMP_TO_EDGE;
+    return options;
+}
+
+// The interactive app: the lab in a window with the cameras, case jumps and reload.
+class LabWindow : public WindowHandler {
+public:
+    LabWindow(Lab& lab, Window& window, const LabBuildInfo& info, const LabManifest& manifest,
+              LabResources& resources, std::string screenshot)
+        : m_lab(lab), m_window(window), m_info(info), m_manifest(manifest), m_resources(resources),
+          m_screenshot(std::move(screenshot)) {}
+
+    void display(glm::ivec2 size) override {
+        reloadChangedShaders();
+        if (m_view != View::Live) {
+            showPicture(size);
+        } else {
+            renderLive(size);
+        }
+        if (m_showUi) drawUi(size);
+        if (!m_screenshot.empty() && ++m_framesDrawn == 2) {
+            saveScreenshot(size, m_screenshot);
+            m_window.requestClose();
+        }
+        if (m_screenshotRequested) {
+            m_screenshotRequested = false;
+            const std::string file = std::string("lab") + m_info.name + "-screenshot.png";
+            saveScreenshot(size, file);
+            std::printf("saved %s\n", file.c_str());
+            std::fflush(stdout);
+        }
+    }
+
+    // Every event goes to the UI panel first (when shown), then to the lab;
+    // what the panel or the lab takes, the app leaves alone (but Escape quits). F1 shows the panel, F12 saves the
+    // window as labNN_name-screenshot.png in the current folder.
+    void event(const InputEvent& event, const InputState&) override {
+        m_uiTookEvent = false;
+        if (m_ui && m_showUi && m_ui->feed(event)) {
+            m_uiTookEvent = true;
+            return;
+        }
+        if (event.type == InputEvent::Type::KeyDown && event.key == Key::F1) {
+            m_showUi = !m_showUi;
+            std::printf("ui panel %s\n", m_showUi ? "on" : "off");
+            std::fflush(stdout);
+        } else if (event.type == InputEvent::Type::KeyDown && event.key == Key::F12) {
+            m_screenshotRequested = true;
+        }
+        runStudentCode([&] { m_uiTookEvent = m_lab.handleEvent(event); });
+    }
+
+    void drawUi(glm::ivec2 size) {
+        if (!m_ui) m_ui = std::make_unique<ImGuiLayer>(size);
+        m_ui->beginFrame();
+        ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_Always);
+        ImGui::SetNextWindowSize(ImVec2(280.0f, 120.0f), ImGuiCond_Always);
+        ImGui::Begin("Stoa");
+        ImGui::Text("lab %s (%s)", m_info.name, m_info.track);
+        ImGui::Text("case %s", m_pictures[m_caseIndex]->name.c_str());
+        ImGui::Text("%.1f ms per frame", 1000.0f / std::max(ImGui::GetIO().Framerate, 1.0f));
+        runStudentCode([&] { m_lab.drawUi(); });   // a stub there leaves the panel whole
+        ImGui::End();
+        m_ui->endFrame();
+    }
+
+    void renderLive(glm::ivec2 size) {
+        try {
+            m_lab.render(size);
+            throwIfShaderStubs(m_resources);
+            setStatus("");
+        } catch (const NotImplemented& stub) {
+            showProblem("not implemented: " + stub.function());
+        } catch (const ShaderNotImplemented& stub) {
+            showProblem(std::string("not implemented: ") + stub.what());
+        }
+    }
+
+    // Every callback below runs student code (the cameras' move(), look(),
+    // tumble() ... are lab 01's exercises) through runStudentCode(), as
+    // renderLive() does, so that a stub shows "not implemented: ..." and the
+    // window keeps running.
+    void update(float seconds, const InputState& input) override {
+        runStudentCode([&] { m_lab.activeCamera().update(input, seconds); });
+        runStudentCode([&] { m_lab.update(seconds); });
+        if (const LabHooks* hooks = m_lab.hooks(); hooks && hooks->stepAgents)
+            runStudentCode([&] { hooks->stepAgents(seconds); });
+    }
+
+    void mouseDragged(glm::vec2 delta, const InputState& input) override {
+        if (m_uiTookEvent) return;
+        runStudentCode([&] { m_lab.activeCamera().mouseDragged(input, delta); });
+    }
+
+    void mouseWheel(int notches) override {
+        if (m_uiTookEvent) return;
+        runStudentCode([&] { m_lab.activeCamera().mouseWheel(notches); });
+    }
+
+    void keyPressed(unsigned char key, const InputState&) override {
+        if (m_uiTookEvent && key != 27) return;   // Escape always quits
+        if (key == 27) {
+            m_window.requestClose();
+        } else if (key >= '1' && key <= '9') {
+            const std::size_t index = static_cast<std::size_t>(key - '1');
+            if (index < m_pictures.size()) {
+                m_caseIndex = index;
+                m_view = View::Live;
+                runStudentCode([&] { m_lab.loadCase(*m_pictures[index]); });
+                std::printf("case %zu: %s -- %s\n", index + 1, m_pictures[index]->name.c_str(),
+                            m_pictures[index]->description.c_str());
+            }
+        } else if (key == '\t') {
+            runStudentCode([&] { m_lab.toggleCamera(); });
+        } else if (key == 'g') {
+            cycleView();
+        } else if (key == 'h') {
+            printHelp();
+        } else {
+            // The lab's own keys run student code too (a stub may throw). Unused keys
+            // are fine: the cameras read W/A/S/D/C/Space as held keys.
+            runStudentCode([&] { m_lab.keyPressed(key); });
+        }
+        std::fflush(stdout);
+    }
+
+    void printHelp() const {
+        std::printf("Lab %s (%s track)\n"
+                    "  mouse        orbit: left tumble, middle or Shift+left track, right or Ctrl+left dolly, wheel dolly\n"
+                    "               first person: hold right and drag to look\n"
+                    "  W A S D      walk (first person); Space up, C or Ctrl down, Shift faster\n"
+                    "  Tab          switch orbit / first-person camera\n"
+                    "  1..9         jump to a graded case's view\n"
+                    "  g            the case as the grader sees it: yours, the reference, the difference, back\n"
+                    "  F1           the UI panel;  F12 save the window as lab%s-screenshot.png\n"
+                    "  h            this help;  Esc quit\n"
+                    "  Shaders reload by themselves when you save them.\n",
+                    m_info.name, m_info.track, m_info.name);
+        for (const std::string& line : m_lab.keyHelp()) std::printf("  %s\n", line.c_str());
+        for (std::size_t i = 0; i < m_pictures.size() && i < 9; ++i)
+            std::printf("  case %zu: %s\n", i + 1, m_pictures[i]->name.c_str());
+        if (m_pictures.size() < m_manifest.cases.size())
+            std::printf("  property checks (no picture): lab%s --check all\n", m_info.name);
+    }
+
+    int exitCode() const { return m_exitCode; }
+
+    /// The case the window shows (and 'g' grades): the first one, or the one --case named.
+    void setCase(std::size_t index) { m_caseIndex = index; }
+    /// The 'g' key: live -> yours -> reference -> difference -> live.
+    void nextView() { cycleView(); }
+
+private:
+    // What the window shows: the live scene, or one of the pictures of the
+    // current case that the grader compares (rendered at the case's size).
+    enum class View { Live, Yours, Reference, Difference };
+
+    void cycleView() {
+        if (m_view == View::Live) {
+            if (!gradeCurrentCase()) return;
+            m_view = View::Yours;
+        } else if (m_view == View::Yours) {
+            m_view = m_reference.id() != 0 ? View::Reference : View::Live;
+        } else if (m_view == View::Reference) {
+            m_view = View::Difference;
+        } else {
+            m_view = View::Live;
+        }
+        static const char* const names[] = {"live", "yours", "reference", "difference"};
+        std::printf("view: %s\n", names[static_cast<int>(m_view)]);
+        m_window.setTitle(std::string("Stoa lab ") + m_info.name + " -- " + names[static_cast<int>(m_view)] +
+                          (m_view == View::Live ? "" : " -- case " + m_pictures[m_caseIndex]->name));
+    }
+
+    // Renders the current case at its size from its own camera (what
+    // `--render` writes), compares it with its reference as stoa-grade does, and
+    // keeps the three pictures as textures. False when the case cannot render.
+    bool gradeCurrentCase() {
+        const CaseSpec& spec = *m_pictures[m_caseIndex];
+        Image yours;
+        try {
+            m_lab.loadCase(spec);
+            yours = renderCaseImage(m_lab, m_resources, spec);
+        } catch (const NotImplemented& stub) {
+            Framebuffer::bindDefault();
+            showProblem("not implemented: " + stub.function());
+            return false;
+        } catch (const ShaderNotImplemented& stub) {
+            Framebuffer::bindDefault();
+            showProblem(std::string("not implemented: ") + stub.what());
+            return false;
+        }
+        m_yours = Texture2D::fromImage(yours, pictureOptions());
+        m_reference = Texture2D();
+        m_difference = Texture2D();
+        std::printf("case %s: rendered at %dx%d from its own camera, as the grader does\n", spec.name.c_str(),
+                    spec.width, spec.height);
+        const CaseComparison comparison = compareWithReference(
+            yours, spec, m_info.referenceDirectory ? m_info.referenceDirectory : "");
+        if (comparison.haveReference) {
+            std::printf("  %s: %s\n", comparison.result.passed ? "passes" : "fails", comparison.result.summary.c_str());
+            m_reference = Texture2D::fromImage(comparison.reference, pictureOptions());
+            if (comparison.result.sameSize) m_difference = Texture2D::fromImage(comparison.difference, pictureOptions());
+        } else {
+            std::printf("  no reference to compare with: %s\n", comparison.problem.c_str());
+        }
+        std::fflush(stdout);
+        return true;
+    }
+
+    // The picture of the current view, as large as fits the window at its aspect ratio.
+    void showPicture(glm::ivec2 size) {
+        if (!m_imageProgram) {
+            m_imageProgram = std::make_unique<Program>(
+                Program::fromFiles("basic/image.vert", "basic/image.frag", m_resources.shaderSearchPath()));
+            m_overlay = std::make_unique<TextureOverlay>();
+        }
+        const Texture2D& picture =
+            m_view == View::Yours ? m_yours : m_view == View::Reference ? m_reference : m_difference;
+        glViewport(0, 0, size.x, size.y);
+        glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if (picture.id() == 0) return;   // a difference of pictures of different sizes
+        const float scale = std::min(static_cast<float>(size.x) / picture.width(),
+                                     static_cast<float>(size.y) / picture.height());
+        const glm::ivec2 shown(static_cast<int>(picture.width() * scale), static_cast<int>(picture.height() * scale));
+        picture.bind(0);
+        m_imageProgram->use();
+        m_imageProgram->set("uImage", 0);
+        m_overlay->draw(*m_imageProgram, {(size.x - shown.x) / 2, (size.y - shown.y) / 2, shown.x, shown.y});
+    }
+
+    // Runs student code from an input callback. A stub's problem goes to the
+    // terminal and the title bar (after the frame's own problem, if it has one);
+    // the window goes on with the next event.
+    template <typename Function>
+    void runStudentCode(Function&& function) {
+        try {
+            function();
+            return;
+        } catch (const NotImplemented& stub) {
+            m_inputProblem = "not implemented: " + stub.function();
+        } catch (const ShaderNotImplemented& stub) {
+            m_inputProblem = std::string("not implemented: ") + stub.what();
+        }
+        setStatus(m_frameProblem);
+    }
+
+    void showProblem(const std::string& problem) {
+        glClearColor(0.25f, 0.05f, 0.05f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        setStatus(problem);
+        if (!m_screenshot.empty()) m_exitCode = kExitNotAttempted;
+    }
+
+    // The title bar shows the frame's problem and the last one an input callback
+    // met (a stub met there stays on show: C++ code does not change while the
+    // program runs); the terminal gets each problem once.
+    void setStatus(const std::string& frameProblem) {
+        m_frameProblem = frameProblem;
+        std::string status = frameProblem;
+        if (!m_inputProblem.empty() && m_inputProblem != frameProblem)
+            status += (status.empty() ? "" : "; ") + m_inputProblem;
+        reportOnce(frameProblem);
+        reportOnce(m_inputProblem);
+        if (status == m_status) return;
+        m_status = status;
+        m_window.setTitle(std::string("Stoa lab ") + m_info.name + (status.empty() ? "" : " -- " + status));
+    }
+
+    void reportOnce(const std::string& problem) {
+        if (problem.empty() || !m_reported.insert(problem).second) return;
+        std::fprintf(stderr, "stoa: %s\n", problem.c_str());
+    }
+
+    void reloadChangedShaders() {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - m_lastReloadCheck < std::chrono::milliseconds(500)) return;
+        m_lastReloadCheck = now;
+        for (const auto& program : m_resources.programs()) {
+            if (program->reloadIfChanged()) std::printf("shaders reloaded\n");
+            else if (!program->lastError().empty() && program->lastError() != m_lastShaderError) {
+                m_lastShaderError = program->lastError();
+                std::fprintf(stderr, "%s\n(keeping the last program that compiled)\n", m_lastShaderError.c_str());
+            }
+        }
+        std::fflush(stdout);
+    }
+
+    static void saveScreenshot(glm::ivec2 size, const std::string& file) {
+        Image image(size.x, size.y, 4);
+        glReadBuffer(GL_BACK);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+        image.flipVertically();
+        image.savePng(file);
+    }
+
+    Lab& m_lab;
+    Window& m_window;
+    const LabBuildInfo& m_info;
+    const LabManifest& m_manifest;
+    const std::vector<const CaseSpec*> m_pictures = m_manifest.pictureCases();   // keys 1..9 jump to these
+    LabResources& m_resources;
+    std::string m_screenshot;
+    std::string m_status = "-";
+    std::string m_inputProblem;       // the last stub an input callback met ("" when none)
+    std::string m_frameProblem;       // the stub the last frame met ("" when none)
+    std::set<std::string> m_reported;   // problems already printed to the terminal
+    std::string m_lastShaderError;
+    std::chrono::steady_clock::time_point m_lastReloadCheck = std::chrono::steady_clock::now();
+    int m_framesDrawn = 0;
+    int m_exitCode = kExitOk;
+    std::size_t m_caseIndex = 0;
+    View m_view = View::Live;
+    Texture2D m_yours, m_reference, m_difference;
+    std::unique_ptr<Program> m_imageProgram;
+    std::unique_ptr<TextureOverlay> m_overlay;
+    std::unique_ptr<ImGuiLayer> m_ui;   // made at the first F1
+    bool m_showUi = false;
+    bool m_uiTookEvent = false;         // the panel or the lab used the event being handled
+    bool m_screenshotRequested = false;
+};
+
+} // namespace
+
+int runWindow(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, const Options& options, int argc,
+              char** argv) {
+    const std::vector<const CaseSpec*> pictures = manifest.pictureCases();
+    if (pictures.empty()) throw InputError(manifest.file, 0, "no case with a picture to show in the window");
+    const CaseSpec& first = options.windowCase.empty() ? *pictures.front() : findCase(manifest, options.windowCase);
+    if (!first.check.empty())
+        throw InputError(manifest.file, first.line,
+                         "case '" + first.name + "' is a property check, with no picture: run it with --check " +
+                             first.name);
+    WindowOptions windowOptions;
+    windowOptions.title = std::string("Stoa lab ") + info.name;
+    if (!options.screenshot.empty()) {
+        windowOptions.width = first.width;    // the screenshot matches the headless render
+        windowOptions.height = first.height;
+    }
+    Window window(argc, argv, windowOptions);
+    enableDebugOutput();
+    LabResources resources(splitSearchPath(info.shaderPath));
+    lab.initialize(resources);
+    LabWindow handler(lab, window, info, manifest, resources, options.screenshot);
+    handler.setCase(static_cast<std::size_t>(std::find(pictures.begin(), pictures.end(), &first) - pictures.begin()));
+    try {
+        lab.loadCase(first);
+        first.requireAllKeysUsed();
+    } catch (const NotImplemented& stub) {
+        std::fprintf(stderr, "stoa: not implemented: %s\n", stub.function().c_str());
+        if (!options.screenshot.empty()) return kExitNotAttempted;
+    }
+    if (options.screenshot.empty()) handler.printHelp();
+    for (int view = 0; view < options.view; ++view) handler.nextView();
+    window.run(handler);
+    return handler.exitCode();
+}
+
+} // namespace stoa::detail

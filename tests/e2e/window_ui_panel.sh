@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# window_ui_panel.sh LAB_PROGRAM WORK_DIR
+# A lab in a window under Xvfb: F12 saves the window, F1 shows the Dear ImGui
+# panel (fed from the window's events), F12 saves it again. The second
+# screenshot must show the panel in its corner and the scene elsewhere as before
+# (check_ui_panel.py).
+set -euo pipefail
+program=$1 work=$2
+here=$(cd "$(dirname "$0")" && pwd)
+
+if [ "${STOA_INSIDE_XVFB:-}" != 1 ]; then
+  mkdir -p "$work"
+  STOA_INSIDE_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
+fi
+
+fail() {
+  echo "FAIL: $*"
+  echo "--- the program's terminal output:"
+  cat "$work/stdout.txt" "$work/stderr.txt" 2>/dev/null || true
+  exit 1
+}
+
+cd "$work"
+name=$(basename "$program")
+shot="$name-screenshot.png"
+rm -f "$shot" before.png after.png
+ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" "$program" > stdout.txt 2> stderr.txt &
+pid=$!
+trap 'kill "$pid" 2>/dev/null || true' EXIT
+
+window=
+for _ in $(seq 1 100); do
+  window=$(xdotool search --onlyvisible --name "Stoa lab" 2>/dev/null | head -n 1 || true)
+  [ -n "$window" ] && break
+  kill -0 "$pid" 2>/dev/null || fail "the program ended before its window opened"
+  sleep 0.1
+done
+[ -n "$window" ] || fail "no window titled 'Stoa lab' appeared within 10 s"
+xdotool windowfocus --sync "$window"
+sleep 0.5
+
+# save NAME COUNT: F12, then wait for the COUNT-th "saved" line.
+save() {
+  xdotool key F12
+  for _ in $(seq 1 100); do
+    [ -f "$shot" ] && [ "$(grep -c "^saved $shot" stdout.txt)" -ge "$2" ] && break
+    sleep 0.1
+  done
+  [ -f "$shot" ] || fail "F12 saved no $shot"
+  mv "$shot" "$1"
+}
+save before.png 1
+xdotool key F1
+for _ in $(seq 1 50); do
+  grep -q "ui panel on" stdout.txt && break
+  sleep 0.2
+done
+grep -q "ui panel on" stdout.txt || fail "F1 did not turn the UI panel on"
+sleep 0.3   # a frame or two with the panel
+save after.png 2
+kill -0 "$pid" 2>/dev/null || fail "the program died with the panel on"
+xdotool key Escape
+for _ in $(seq 1 50); do
+  kill -0 "$pid" 2>/dev/null || break
+  sleep 0.1
+done
+kill -0 "$pid" 2>/dev/null && fail "the program did not quit on Escape"
+trap - EXIT
+python3 "$here/check_ui_panel.py" before.png after.png || fail "the panel is not in the screenshot"
+echo "PASS: the ImGui panel draws over the lab (screenshots in $work)"
