@@ -2,7 +2,7 @@
 
 #include "BatchGradeJson.hpp"
 #include "ChildProcess.hpp"
-#include "CommandLine.hpp"
+#include "GradeOptions.hpp"
 #include "Grader.hpp"
 #include "JsonWriter.hpp"
 #include "LabCatalog.hpp"
