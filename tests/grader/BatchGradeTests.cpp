@@ -5,6 +5,7 @@
 #include "BatchGradeJson.hpp"
 #include "BatchGradeSubmissions.hpp"
 #include "ClassGrader.hpp"
+#include "CommandLine.hpp"
 #include "DeterminismCheck.hpp"
 
 #include <stoa/core/InputError.hpp>

@@ -1,4 +1,4 @@
-// Case timeouts from the solutions' render times (autograder/src/RenderTimes.hpp):
+// Case timeouts from the solutions' render times (autograder/src/run/RenderTimes.hpp):
 // the policy, the render-times file, and a hanging program paying the full limit
 // once and the short one after.
 

@@ -4,14 +4,19 @@
 #include "catch.hpp"
 
 #include <stoa/core/InputError.hpp>
+#include <stoa/core/Paths.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 
+#include <fstream>
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+using stoa::CaseKey;
+using stoa::caseKeys;
 using stoa::CaseSpec;
+using stoa::findCaseKey;
 using stoa::InputError;
 using stoa::LabManifest;
 using stoa::loadManifest;
@@ -390,4 +395,47 @@ TEST_CASE("parseManifest: a property check is a case with a check key and no pic
     const auto unused = inputErrorFrom([&] { typo.cases[0].requireAllKeysUsed(); });
     REQUIRE(unused);
     CHECK(contains(unused->message(), "max_flip_mean"));
+}
+
+TEST_CASE("CaseManifest: one table of typed keys drives parsing, errors and suggestions, and the guide lists it") {
+    // Every key of the table stores a good value and names what it expected for a bad one.
+    const char* const good[][2] = {{"description", "A view"}, {"resolution", "64 32"}, {"points", "2"},
+                                   {"visibility", "hidden"},  {"tolerance", "8"},       {"max_bad_fraction", "0.01"},
+                                   {"max_flip_mean", "0.1"},  {"check", "camera_limits"}};
+    REQUIRE(caseKeys().size() == std::size(good));
+    for (const auto& [key, value] : good) {
+        INFO(key);
+        const CaseKey* typed = findCaseKey(key);
+        REQUIRE(typed);
+        CHECK_NOTHROW(parseManifest(std::string("lab = 05_test\n[case a]\n") + key + " = " + value + "\n", "c.ini"));
+        if (std::string(key) == "description") continue;   // any text is a description
+        const auto bad = parseError(kHead + key + " = ???\n");
+        REQUIRE(bad);
+        CHECK(bad->line() == 4);
+        CHECK(contains(bad->message(), "expected " + std::string(typed->expected) + ", got '???'"));
+        // Outside a case, a typed key is named as misplaced, not as unknown.
+        const auto misplaced = parseError(std::string(key) + " = " + value + "\nlab = 05_test\n[case a]\n");
+        REQUIRE(misplaced);
+        CHECK(contains(misplaced->message(), "outside any [case NAME] section"));
+    }
+    CHECK_FALSE(findCaseKey("camera"));   // a scene parameter, the lab's
+
+    // The instructor guide's table of "keys the grader reads itself" is this table, in order.
+    std::ifstream guide(stoa::paths::sourceDir() / "docs" / "instructor-guide.md");
+    REQUIRE(guide);
+    std::string line;
+    while (std::getline(guide, line) && line.find("Keys the grader reads itself") == std::string::npos) {}
+    std::vector<std::string> documented;
+    bool inTable = false;
+    while (std::getline(guide, line)) {
+        if (line.rfind("| `", 0) == 0) {
+            inTable = true;
+            documented.push_back(line.substr(3, line.find('`', 3) - 3));
+        } else if (inTable) {
+            break;
+        }
+    }
+    std::vector<std::string> table;
+    for (const CaseKey& typed : caseKeys()) table.emplace_back(typed.key);
+    CHECK(documented == table);
 }

@@ -37,8 +37,9 @@ Image renderCaseImage(Lab& lab, const LabResources& resources, const CaseSpec& s
 int runOneCheck(Lab& lab, const CaseSpec& spec) {
     spec.requireAllKeysUsed();
     const CheckResult result = lab.runCheck(spec);
-    std::printf("check %s: %s: %s\n", spec.name.c_str(), result.holds ? "holds" : "does not hold",
-                result.message.c_str());
+    std::printf("%s\n", checkVerdictLine(spec.name, result.holds ? CheckVerdict::Holds : CheckVerdict::DoesNotHold,
+                                        result.message)
+                           .c_str());
     std::fflush(stdout);
     return result.holds ? kExitOk : kExitCheckFailed;
 }
@@ -64,7 +65,9 @@ int runChecks(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, c
         try {
             if (runOneCheck(lab, *spec) != kExitOk) ++failed;
         } catch (const NotImplemented& stub) {
-            std::printf("check %s: not attempted: not implemented: %s\n", spec->name.c_str(), stub.function().c_str());
+            std::printf("%s\n",
+                        checkVerdictLine(spec->name, CheckVerdict::NotAttempted, notImplementedText(stub.function()))
+                            .c_str());
             ++notAttempted;
         }
     }

@@ -70,10 +70,10 @@ int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv) {
         if (!options.renderCase.empty()) return renderHeadless(lab, info, manifest, options);
         return runWindow(lab, info, manifest, options, argc, argv);
     } catch (const NotImplemented& stub) {
-        std::fprintf(stderr, "stoa: not implemented: %s\n", stub.function().c_str());
+        std::fprintf(stderr, "%s\n", notImplementedLine(stub.function()).c_str());
         return kExitNotAttempted;
     } catch (const ShaderNotImplemented& stub) {
-        std::fprintf(stderr, "stoa: not implemented: %s\n", stub.what());
+        std::fprintf(stderr, "%s\n", notImplementedLine(stub.what()).c_str());
         return kExitNotAttempted;
     } catch (const InputError& error) {
         std::fprintf(stderr, "lab%s: %s\n", info.name, error.what());

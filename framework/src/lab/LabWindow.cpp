@@ -104,9 +104,9 @@ public:
             throwIfShaderStubs(m_resources);
             setStatus("");
         } catch (const NotImplemented& stub) {
-            showProblem("not implemented: " + stub.function());
+            showProblem(notImplementedText(stub.function()));
         } catch (const ShaderNotImplemented& stub) {
-            showProblem(std::string("not implemented: ") + stub.what());
+            showProblem(notImplementedText(stub.what()));
         }
     }
 
@@ -217,11 +217,11 @@ private:
             yours = renderCaseImage(m_lab, m_resources, spec);
         } catch (const NotImplemented& stub) {
             Framebuffer::bindDefault();
-            showProblem("not implemented: " + stub.function());
+            showProblem(notImplementedText(stub.function()));
             return false;
         } catch (const ShaderNotImplemented& stub) {
             Framebuffer::bindDefault();
-            showProblem(std::string("not implemented: ") + stub.what());
+            showProblem(notImplementedText(stub.what()));
             return false;
         }
         m_yours = Texture2D::fromImage(yours, pictureOptions());
@@ -273,9 +273,9 @@ private:
             function();
             return;
         } catch (const NotImplemented& stub) {
-            m_inputProblem = "not implemented: " + stub.function();
+            m_inputProblem = notImplementedText(stub.function());
         } catch (const ShaderNotImplemented& stub) {
-            m_inputProblem = std::string("not implemented: ") + stub.what();
+            m_inputProblem = notImplementedText(stub.what());
         }
         setStatus(m_frameProblem);
     }
@@ -383,7 +383,7 @@ int runWindow(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, c
         lab.loadCase(first);
         first.requireAllKeysUsed();
     } catch (const NotImplemented& stub) {
-        std::fprintf(stderr, "stoa: not implemented: %s\n", stub.function().c_str());
+        std::fprintf(stderr, "%s\n", notImplementedLine(stub.function()).c_str());
         if (!options.screenshot.empty()) return kExitNotAttempted;
     }
     if (options.screenshot.empty()) handler.printHelp();

@@ -107,6 +107,20 @@ struct LabManifest {
     std::vector<const CaseSpec*> pictureCases() const;
 };
 
+/// A key of a case that the manifest parser reads itself (`resolution`,
+/// `tolerance`, `check`, ...), as opposed to the lab's scene parameters.
+struct CaseKey {
+    const char* key;
+    const char* expected;   // what a good value looks like, for the error message
+    /// Stores a value in the case; false when it does not parse (nothing stored).
+    bool (*read)(CaseSpec& spec, const std::string& value);
+};
+
+/// Every typed case key, in one table: it drives parsing, errors and "did you mean".
+const std::vector<CaseKey>& caseKeys();
+/// The table's entry for `key`; nullptr for a scene parameter.
+const CaseKey* findCaseKey(const std::string& key);
+
 /// Parses a manifest. Throws InputError with file and line on a syntax error, an
 /// unknown lab-level key, a duplicate case or key, or a typed value that does not parse.
 LabManifest loadManifest(const std::filesystem::path& path);

@@ -25,14 +25,13 @@
 
 #include <stoa/lab/Lab.hpp>
 #include <stoa/lab/LabBuildInfo.hpp>
+#include <stoa/lab/LabProtocol.hpp>   // the exit codes
 
 #include <string>
 
 namespace stoa {
 
 int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv);
-
-enum ExitCode { kExitOk = 0, kExitError = 1, kExitUsage = 2, kExitNotAttempted = 3, kExitCheckFailed = 4 };
 
 } // namespace stoa
 

@@ -4,6 +4,7 @@
 
 #include <stoa/core/InputError.hpp>
 #include <stoa/image/ImageCompare.hpp>
+#include <stoa/lab/LabProtocol.hpp>
 
 #include <exception>
 
@@ -11,9 +12,6 @@ namespace stoa::grader {
 
 namespace {
 
-constexpr int kExitNotAttempted = 3;
-constexpr int kExitBadUsage = 2;
-constexpr int kExitCheckFailed = 4;   // a property check that does not hold (PropertyCheck.hpp)
 
 const char* const kNoReference = "no reference image: run stoa-grade --update-references from a solutions build";
 
@@ -23,7 +21,7 @@ std::string sizeText(int width, int height) { return std::to_string(width) + "x"
 // when that line says more.
 std::string errorReason(const ProcessOutcome& process) {
     std::string reason = process.describe();
-    if (process.exitedWith(kExitBadUsage)) reason += " (bad usage)";
+    if (process.exitedWith(kExitUsage)) reason += " (bad usage)";
     if (process.ending == ProcessEnding::Exited || process.ending == ProcessEnding::Signalled) {
         std::string last = process.lastOutputLine();
         if (!last.empty()) reason += ": " + last;
@@ -57,9 +55,8 @@ std::string changedList(const std::vector<std::filesystem::path>& files) {
 } // namespace
 
 std::string notAttemptedReason(const ProcessOutcome& process) {
-    std::string last = process.lastOutputLine();
-    if (last.rfind("stoa: ", 0) == 0) last = last.substr(6);
-    if (last.find("not implemented") != std::string::npos) return last;
+    if (const std::optional<std::string> what = parseNotImplementedLine(process.lastOutputLine()))
+        return notImplementedText(*what);
     return "not attempted (a stub is not implemented yet)";
 }
 
@@ -95,12 +92,13 @@ RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings) {
         if (!job.spec.check.empty()) {
             // A property check draws no picture: its exit status is the verdict and
             // its last line says what it measured.
-            if (outcome.process.exitedWith(0) || outcome.process.exitedWith(kExitCheckFailed)) {
-                outcome.status = outcome.process.exitedWith(0) ? GradeStatus::Passed : GradeStatus::Failed;
-                outcome.reason = outcome.process.lastOutputLine();
-                const std::string prefix = "check " + job.spec.name + ": ";
-                if (outcome.reason.rfind(prefix, 0) == 0) outcome.reason = outcome.reason.substr(prefix.size());
-                if (outcome.reason.empty()) outcome.reason = outcome.process.exitedWith(0) ? "holds" : "does not hold";
+            if (outcome.process.exitedWith(kExitOk) || outcome.process.exitedWith(kExitCheckFailed)) {
+                const bool holds = outcome.process.exitedWith(kExitOk);
+                outcome.status = holds ? GradeStatus::Passed : GradeStatus::Failed;
+                // The reason the report shows: "holds: ..." / "does not hold: ..." from the verdict line.
+                const std::optional<CheckVerdictLine> verdict = parseCheckVerdictLine(outcome.process.lastOutputLine());
+                const std::string said = holds ? "holds" : "does not hold";
+                outcome.reason = verdict && verdict->name == job.spec.name ? said + ": " + verdict->message : said;
             } else {
                 outcome.reason = errorReason(outcome.process);
             }

@@ -36,7 +36,7 @@ std::vector<std::string> notFailedAsListed(const MistakeFile& mistake, const std
         if (result == results.end())
             problems.push_back(name + " was not graded");
         else if (result->status != GradeStatus::Failed)
-            problems.push_back(name + " " + (result->status == GradeStatus::Passed ? "passed"
+            problems.push_back(name + " " + (result->status == GradeStatus::Passed ? std::string(statusName(GradeStatus::Passed))
                                              : std::string("is ") + statusName(result->status) + ": " + result->reason));
     }
     return problems;

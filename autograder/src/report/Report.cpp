@@ -207,7 +207,7 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
             int count = lab->statuses.total();
             out << padded(result.lab, labWidth) << "  "
                 << padded("(" + std::to_string(count) + (count == 1 ? " case)" : " cases)"), caseWidth) << "  "
-                << padded("not attempted", statusWidth) << "  "
+                << padded(statusName(GradeStatus::NotAttempted), statusWidth) << "  "
                 << padded(formatPoints(lab->points) + " / " + formatPoints(lab->maxPoints), pointsWidth)
                 << "  start with docs/labs/" << result.lab << ".md\n";
             continue;

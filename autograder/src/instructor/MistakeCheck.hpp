@@ -6,7 +6,7 @@
 // gallery, see Hints.hpp) must name that very mistake. Prints one row per
 // mistake; exit 1 if any is not caught.
 
-#include "CommandLine.hpp"
+#include "GradeOptions.hpp"
 #include "GradeResult.hpp"
 #include "LabPlan.hpp"
 #include "MistakeFile.hpp"

@@ -13,7 +13,7 @@
 // MistakeGallery.hpp): "gallery: N images".
 
 #include "CaseRunner.hpp"
-#include "CommandLine.hpp"
+#include "GradeOptions.hpp"
 #include "LabPlan.hpp"
 
 #include <stoa/image/ImageCompare.hpp>

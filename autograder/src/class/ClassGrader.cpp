@@ -2,7 +2,7 @@
 
 #include "BatchGradeJson.hpp"
 #include "ChildProcess.hpp"
-#include "CommandLine.hpp"
+#include "GradeOptions.hpp"
 #include "Grader.hpp"
 #include "JsonWriter.hpp"
 #include "LabCatalog.hpp"
@@ -139,18 +139,19 @@ bool hasTag(const JsonValue& test, const std::string& wanted) {
 std::string testStatus(const JsonValue& test) {
     if (const JsonValue* tags = test.find("tags"))
         for (const JsonValue& tag : tags->items())
-            for (const char* known : {"passed", "failed", "not attempted", "error", "no reference"})
-                if (tag.asString() == known) return known;
+            if (statusFromName(tag.asString())) return tag.asString();
     const JsonValue* status = test.find("status");
     return status ? status->asString() : "unknown";
 }
 
 std::string describeCounts(const std::map<std::string, int>& counts, int total) {
-    if (counts.count("passed") && counts.at("passed") == total) return "";
-    if (counts.count("not attempted") && counts.at("not attempted") == total) return "not attempted";
+    const std::string passed = statusName(GradeStatus::Passed);
+    const std::string notAttempted = statusName(GradeStatus::NotAttempted);
+    if (counts.count(passed) && counts.at(passed) == total) return "";
+    if (counts.count(notAttempted) && counts.at(notAttempted) == total) return notAttempted;
     std::string text;
     for (const auto& [status, count] : counts)
-        if (status != "passed") text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + status;
+        if (status != passed) text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + status;
     return text;
 }
 
@@ -201,7 +202,7 @@ void addBuildFailures(const std::filesystem::path& resultsJson, const StudentGra
         // A lab graded through its cascade program already has its points in the tests.
         const LabGrade& labGrade = grade.labs.at(lab);
         test.set("max_score", JsonValue::number(labGrade.cascadeBuilt ? 0.0 : labGrade.maxPoints));
-        test.set("status", JsonValue::string("failed"));
+        test.set("status", JsonValue::string("failed"));   // Gradescope's word, not a GradeStatus
         test.set("name", JsonValue::string(lab + "/build"));
         test.set("output", JsonValue::string(
             (labGrade.cascadeBuilt ? "The lab does not compile with your earlier labs; it was graded with their "

@@ -1,6 +1,6 @@
 #include "LabCatalog.hpp"
 
-#include "CommandLine.hpp"
+#include "GradeOptions.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -39,4 +39,10 @@ const char* statusName(GradeStatus status) {
     return "unknown";
 }
 
+std::optional<GradeStatus> statusFromName(const std::string& name) {
+    for (GradeStatus status : kAllStatuses)
+        if (name == statusName(status)) return status;
+    return std::nullopt;
+}
+
 } // namespace stoa::grader

@@ -70,7 +70,7 @@ bool updateRenderTimes(const std::filesystem::path& file, const std::map<std::st
     std::ostringstream text;
     text << "# The solution's render time of each case, in seconds, rounded up to a tenth; written by\n"
             "# stoa-grade --update-references, which changes a time only when it more than doubles or\n"
-            "# halves. Each case's timeout is derived from it (autograder/src/RenderTimes.hpp).\n";
+            "# halves. Each case's timeout is derived from it (autograder/src/run/RenderTimes.hpp).\n";
     for (const auto& [name, seconds] : updated) {
         char value[32];
         std::snprintf(value, sizeof value, "%.1f", seconds);

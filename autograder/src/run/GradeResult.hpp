@@ -31,8 +31,15 @@ struct CompareMetrics {
 /// The figures of `comparison`.
 CompareMetrics metricsOf(const CompareResult& comparison);
 
-/// "passed", "failed", "not attempted", "error", "no reference".
+/// Every status, in the order above.
+inline constexpr GradeStatus kAllStatuses[] = {GradeStatus::Passed, GradeStatus::Failed, GradeStatus::NotAttempted,
+                                               GradeStatus::Error, GradeStatus::NoReference};
+
+/// "passed", "failed", "not attempted", "error", "no reference": the one
+/// spelling of each status (reports, results.json tags, class summaries).
 const char* statusName(GradeStatus status);
+/// The status statusName() spells `name`; nothing for another word.
+std::optional<GradeStatus> statusFromName(const std::string& name);
 
 struct GradeResult {
     std::string lab;                       // "01_transforms"

@@ -6,7 +6,7 @@
 // difference. Graded frames must not depend on the run or the thread count.
 
 #include "CaseRunner.hpp"
-#include "CommandLine.hpp"
+#include "GradeOptions.hpp"
 #include "LabPlan.hpp"
 
 #include <stoa/image/Image.hpp>

@@ -2,7 +2,7 @@
 // `stoa-grade [--lab ...] [--case ...] ...`: grade, print the report, and
 // optionally write Gradescope's results.json.
 
-#include "CommandLine.hpp"
+#include "GradeOptions.hpp"
 #include "LabPlan.hpp"
 
 #include <string>

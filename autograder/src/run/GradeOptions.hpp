@@ -1,17 +1,6 @@
 #pragma once
-// stoa-grade's command line.
-//
-//   stoa-grade [--lab NN_name|NN]... [--case NAME]... [--bin-dir DIR] [--backend osmesa|egl]
-//              [--json FILE] [--html FILE] [--junit FILE] [--timeout SECONDS] [--jobs N] [--work-dir DIR]
-//              [--expect pass|not-attempted]
-//   stoa-grade --update-references [--lab ...] [--case ...]
-//   stoa-grade --check-mistakes [--lab ...]
-//   stoa-grade --check-hints DIR [--lab ...]
-//   stoa-grade --determinism [--lab ...] [--case ...]
-//   stoa-grade --write-heatmap-legend FILE
-//   stoa-grade --help
-//
-// Options take their value as the next argument or after '=' (--jobs=4).
+// What stoa-grade was asked to do: the options its command line (cli/CommandLine.hpp)
+// fills in and the layers below read, and the error for a request that makes no sense.
 
 #include "GradeResult.hpp"
 
@@ -49,12 +38,5 @@ struct Options {
                                               // (DIR/<lab>/mistakes/*.mistake), mode CheckMistakes
     std::filesystem::path heatMapLegend;      // --write-heatmap-legend FILE: mode HeatMapLegend
 };
-
-/// Parses the arguments after the program name. Throws UsageError naming the
-/// argument and the valid choices.
-Options parseCommandLine(const std::vector<std::string>& arguments);
-
-/// The --help text.
-std::string usageText();
 
 } // namespace stoa::grader

@@ -3,7 +3,7 @@
 // manifests, with the selected cases, and the jobs that render them.
 
 #include "CaseRunner.hpp"
-#include "CommandLine.hpp"
+#include "GradeOptions.hpp"
 #include "LabCatalog.hpp"
 
 #include <stoa/lab/CaseManifest.hpp>

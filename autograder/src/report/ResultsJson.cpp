@@ -73,6 +73,7 @@ std::string resultsJson(const std::vector<GradeResult>& results, const Totals& t
         // tests add up to the top-level score (Cascade.hpp).
         json.key("score").value(result.counted ? result.points : 0.0);
         json.key("max_score").value(result.counted ? result.maxPoints : 0.0);
+        // Gradescope's two statuses; stoa-grade's own is in the tags.
         json.key("status").value(result.status == GradeStatus::Passed ? "passed" : "failed");
         json.key("name").value(result.fullName());
         json.key("number").value(testNumber(result.lab, labIndex, caseIndex));
