@@ -6,6 +6,7 @@
 
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/core/InputError.hpp>
+#include <stoa/core/Paths.hpp>
 #include <stoa/gl/CubeMap.hpp>
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/Program.hpp>
@@ -120,4 +121,24 @@ TEST_CASE("CubeMap: faces that are not square, differ in size or are missing are
     }
     faces[5].savePng(folder.path() / "nz.png");
     CHECK(CubeMap::fromFolder(folder.path()).size() == 2);
+}
+
+TEST_CASE("CubeMap: the committed sky loads, and straight up reads the sky's blue") {
+    HeadlessContext context;
+    const CubeMap sky = CubeMap::fromFolder(paths::assetsDir() / "sky");
+    CHECK(sky.size() == 128);
+    const Program program = Program::fromSources(ShaderSource::fromText(kVertex, "sky_test.vert", {}),
+                                                 ShaderSource::fromText(kFragment, "sky_test.frag", {}));
+    VertexArray empty;
+    Framebuffer target(1, 1);
+    beginPass(passInto(target, RenderState::overlay()));
+    sky.bind(0);
+    program.use();
+    program.set("uSky", 0);
+    program.set("uDirection", glm::vec3(0.0f, 1.0f, 0.0f));
+    empty.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    const glm::u8vec4 zenith = target.readColor().pixel(0, 0);
+    INFO("straight up: " << describe(zenith));
+    CHECK(zenith.b > zenith.r + 60);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Draws DebugLines (geometry/DebugLines.hpp) as GL_LINES with
-// shaders/debug/lines.{vert,frag}, in the pass that is current: the caller's
+// shaders/debug/lines.vert and lines.frag, in the pass that is current: the caller's
 // RenderState decides whether they are depth tested (see RenderPass.hpp).
 //
 //   const Program& program = resources.loadProgram("debug/lines.vert", "debug/lines.frag");
@@ -19,7 +19,7 @@ class Program;
 
 class DebugLineRenderer {
 public:
-    /// `program` is shaders/debug/lines.{vert,frag} (or one with the same
+    /// `program` is shaders/debug/lines.vert with lines.frag (or one with the same
     /// attributes and uViewProjection); it must outlive the renderer.
     explicit DebugLineRenderer(const Program& program);
 
