@@ -3,8 +3,10 @@
 //
 //   stoa-generate-assets OUTPUT_DIR                     every committed file
 //   stoa-generate-assets --dense-statue N OUTPUT_DIR    only statue_dense.obj, about N triangles
+//   stoa-generate-assets --sky OUTPUT_DIR               the sky's six cube-map faces (assets/sky/)
 
 #include "Acropolis.hpp"
+#include "Sky.hpp"
 
 #include <stoa/core/InputError.hpp>
 
@@ -19,8 +21,10 @@ int usage() {
     std::fprintf(stderr,
                  "usage: stoa-generate-assets OUTPUT_DIR\n"
                  "       stoa-generate-assets --dense-statue TRIANGLES OUTPUT_DIR\n"
+                 "       stoa-generate-assets --sky OUTPUT_DIR\n"
                  "Writes the Acropolis scene (assets/acropolis/ is its committed output), or only a\n"
-                 "statue with about TRIANGLES triangles as OUTPUT_DIR/statue_dense.obj.\n");
+                 "statue with about TRIANGLES triangles as OUTPUT_DIR/statue_dense.obj, or the sky's\n"
+                 "six cube-map faces (assets/sky/ is their committed output).\n");
     return 2;
 }
 
@@ -31,6 +35,11 @@ int main(int argc, char** argv) {
         if (argc == 2 && argv[1][0] != '-') {
             stoa::assets::generateAcropolis(argv[1]);
             std::printf("wrote %zu files to %s\n", stoa::assets::acropolisFileNames().size(), argv[1]);
+            return 0;
+        }
+        if (argc == 3 && std::string(argv[1]) == "--sky") {
+            stoa::assets::generateSky(argv[2]);
+            std::printf("wrote %zu files to %s\n", stoa::assets::skyFileNames().size(), argv[2]);
             return 0;
         }
         if (argc == 4 && std::string(argv[1]) == "--dense-statue") {

@@ -25,6 +25,12 @@ if(NOT tinyobjloader_FOUND)
   message(FATAL_ERROR "Stoa needs tinyobjloader (Debian package: libtinyobjloader-dev). Run .ci/install-deps.sh.")
 endif()
 
+# meshoptimizer's simplifier makes lab 06's levels of detail (geometry/LevelOfDetail.cpp).
+find_package(meshoptimizer CONFIG QUIET)
+if(NOT meshoptimizer_FOUND)
+  message(FATAL_ERROR "Stoa needs meshoptimizer (Debian package: libmeshoptimizer-dev). Run .ci/install-deps.sh.")
+endif()
+
 find_path(GLM_INCLUDE_DIR glm/glm.hpp)
 if(NOT GLM_INCLUDE_DIR)
   message(FATAL_ERROR "Stoa needs GLM (Debian package: libglm-dev). Run .ci/install-deps.sh.")

@@ -7,6 +7,7 @@
 #include "TempFolder.hpp"
 
 #include <Acropolis.hpp>
+#include <Sky.hpp>
 #include <PortableMath.hpp>
 
 #include <stoa/core/InputError.hpp>
@@ -205,4 +206,28 @@ TEST_CASE("The dense statue has about the requested triangle count", "[geometry]
     REQUIRE(model.parts.size() == 1);
     CHECK(model.parts.front().mesh.triangleCount() == 10000u);  // 4 * 50^2
     CHECK(test::firstTriangleAgainstNormals(model.parts.front().mesh).empty());
+}
+
+TEST_CASE("The generator reproduces the committed sky byte for byte, and the sky is a sky", "[geometry][assets]") {
+    const fs::path committedSky = paths::assetsDir() / "sky";
+    test::TempFolder folder("sky");
+    assets::generateSky(folder.path());
+    for (const std::string& name : assets::skyFileNames()) {
+        INFO(name << ": regenerate with bin/stoa-generate-assets --sky assets/sky (assets/README.md)");
+        REQUIRE(fs::exists(committedSky / name));
+        const Image mine = Image::load(folder / name), committed = Image::load(committedSky / name);
+        REQUIRE(mine.sizeInBytes() == committed.sizeInBytes());
+        // Pixels, not bytes: another libstb may encode the same pixels differently.
+        CHECK(std::equal(mine.data(), mine.data() + mine.sizeInBytes(), committed.data()));
+        CHECK(committed.width() == 128);
+        CHECK(committed.height() == 128);
+    }
+    // Overhead (the middle of +Y) is bluer than the horizon (the middle of a side
+    // face's top row), and below (-Y) is earth, warmer than blue.
+    const Image up = Image::load(committedSky / "py.png"), side = Image::load(committedSky / "px.png"),
+                down = Image::load(committedSky / "ny.png");
+    const glm::u8vec4 zenith = up.pixel(64, 64), horizon = side.pixel(64, 63), ground = down.pixel(64, 64);
+    CHECK(zenith.b > zenith.r + 60);
+    CHECK(horizon.b - horizon.r < zenith.b - zenith.r);
+    CHECK(ground.r > ground.b);
 }

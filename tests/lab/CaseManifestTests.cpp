@@ -409,10 +409,10 @@ TEST_CASE("CaseManifest: one table of typed keys drives parsing, errors and sugg
         REQUIRE(typed);
         CHECK_NOTHROW(parseManifest(std::string("lab = 05_test\n[case a]\n") + key + " = " + value + "\n", "c.ini"));
         if (std::string(key) == "description") continue;   // any text is a description
-        const auto bad = parseError(kHead + key + " = ???\n");
+        const auto bad = parseError(kHead + key + " = nonsense!\n");
         REQUIRE(bad);
         CHECK(bad->line() == 4);
-        CHECK(contains(bad->message(), "expected " + std::string(typed->expected) + ", got '???'"));
+        CHECK(contains(bad->message(), "expected " + std::string(typed->expected) + ", got 'nonsense!'"));
         // Outside a case, a typed key is named as misplaced, not as unknown.
         const auto misplaced = parseError(std::string(key) + " = " + value + "\nlab = 05_test\n[case a]\n");
         REQUIRE(misplaced);
