@@ -1,0 +1,21 @@
+#version 330 core
+#include "common/frame.glsl"   // the per-frame uniform block
+// Lab 06's field of columns and statues: positions to clip space, normals and
+// uvs on to field.frag. No student code here: lab 06 grades culling and the
+// level of detail, not shading.
+
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aUv;
+
+uniform mat4 uModel;
+uniform mat3 uNormalMatrix;
+
+out vec3 vNormalWorld;
+out vec2 vUv;
+
+void main() {
+    vNormalWorld = uNormalMatrix * aNormal;
+    vUv = aUv;
+    gl_Position = uProjection * uView * (uModel * vec4(aPosition, 1.0));
+}
