@@ -109,7 +109,7 @@ glm::mat4 placement(const glm::vec3& position, float yawDegrees, const glm::vec3
 class CullingLab : public stoa::Lab {
 public:
     void initialize(stoa::LabResources& resources) override {
-        m_fieldProgram = &resources.loadProgram("culling/field.vert", "culling/field.frag");
+        m_fieldProgram = &resources.loadProgram("basic/lit.vert", "basic/lit.frag");
         m_skyProgram = &resources.loadProgram("culling/skybox.vert", "culling/skybox.frag");
         m_debug = std::make_unique<stoa::DebugLineRenderer>(resources.loadProgram("debug/lines.vert", "debug/lines.frag"));
         m_fieldProgram->bindUniformBlock(stoa::FrameUniforms::kBlockName, stoa::FrameUniforms::kBinding);

@@ -11,7 +11,7 @@
 //       object, the median of N runs (default 7) of many passes each.
 //       Goal: <= 20 ns per object.
 //   (b) the frame time at 1280x720 on the headless context (llvmpipe), drawn
-//       with shaders/culling/field.{vert,frag}: every column at full detail, the
+//       with shaders/basic/lit.vert and lit.frag: every column at full detail, the
 //       visible ones at full detail (culling alone), and the visible ones at
 //       their level (culling + levels of detail, default LodSettings; the
 //       decisions are made inside the timed frame). Each ends with glFinish().
@@ -266,7 +266,7 @@ int main(int argc, char** argv) {
         cpuTable(field, view, levelCount, runs);
 
         // (b) The frame, as lab 06's app draws its field.
-        const stoa::Program program = stoa::Program::fromFiles("culling/field.vert", "culling/field.frag",
+        const stoa::Program program = stoa::Program::fromFiles("basic/lit.vert", "basic/lit.frag",
                                                                {stoa::paths::shadersDir()});
         program.bindUniformBlock(stoa::FrameUniforms::kBlockName, stoa::FrameUniforms::kBinding);
         const stoa::ObjectUniforms uniforms(program);

@@ -143,32 +143,45 @@ void buildAcropolisScene(Scene& scene, const AcropolisOptions& options) {
     }
 }
 
+namespace {
+
+// Object::modelMatrix()'s order (scale, then X, Y, Z rotations, then translation),
+// written out here so that what needs no GL does not depend on the lab-01 code being built.
+glm::mat4 modelOf(const Placement& placement) {
+    glm::mat4 model = glm::translate(glm::mat4(1.0f), placement.position);
+    model = glm::rotate(model, glm::radians(placement.rotationDegrees.z), {0.0f, 0.0f, 1.0f});
+    model = glm::rotate(model, glm::radians(placement.rotationDegrees.y), {0.0f, 1.0f, 0.0f});
+    model = glm::rotate(model, glm::radians(placement.rotationDegrees.x), {1.0f, 0.0f, 0.0f});
+    return glm::scale(model, placement.scale);
+}
+
+} // namespace
+
+std::vector<AcropolisPiece> acropolisPieces(const AcropolisOptions& options) {
+    std::vector<AcropolisPiece> pieces;
+    for (const Placement& placement : layout(options)) {
+        const glm::mat4 model = modelOf(placement);
+        if (placement.file.empty()) {
+            pieces.push_back({placement.name, &pedestalMesh(), pedestalMaterial(), model});
+            continue;
+        }
+        for (const ModelPart& part : acropolisModel(placement.file).parts)
+            pieces.push_back({placement.name, &part.mesh, part.material, model});
+    }
+    return pieces;
+}
+
 std::pair<glm::vec3, glm::vec3> acropolisBounds(const AcropolisOptions& options) {
     glm::vec3 lower(std::numeric_limits<float>::max()), upper(std::numeric_limits<float>::lowest());
-    for (const Placement& placement : layout(options)) {
-        std::vector<const Mesh*> parts;
-        if (placement.file.empty()) {
-            parts.push_back(&pedestalMesh());
-        } else {
-            for (const ModelPart& part : acropolisModel(placement.file).parts) parts.push_back(&part.mesh);
-        }
-        // Object::modelMatrix()'s order (scale, then X, Y, Z rotations, then translation),
-        // written out here so that the bounds do not depend on the lab-01 code being built.
-        glm::mat4 model = glm::translate(glm::mat4(1.0f), placement.position);
-        model = glm::rotate(model, glm::radians(placement.rotationDegrees.z), {0.0f, 0.0f, 1.0f});
-        model = glm::rotate(model, glm::radians(placement.rotationDegrees.y), {0.0f, 1.0f, 0.0f});
-        model = glm::rotate(model, glm::radians(placement.rotationDegrees.x), {1.0f, 0.0f, 0.0f});
-        model = glm::scale(model, placement.scale);
-        for (const Mesh* mesh : parts) {
-            // The 8 corners of the object-space box bound the transformed mesh.
-            const auto [boxLower, boxUpper] = mesh->bounds();
-            for (int corner = 0; corner < 8; ++corner) {
-                const glm::vec3 local((corner & 1) ? boxUpper.x : boxLower.x, (corner & 2) ? boxUpper.y : boxLower.y,
-                                      (corner & 4) ? boxUpper.z : boxLower.z);
-                const glm::vec3 world(model * glm::vec4(local, 1.0f));
-                lower = glm::min(lower, world);
-                upper = glm::max(upper, world);
-            }
+    for (const AcropolisPiece& piece : acropolisPieces(options)) {
+        // The 8 corners of the object-space box bound the transformed mesh.
+        const auto [boxLower, boxUpper] = piece.mesh->bounds();
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 local((corner & 1) ? boxUpper.x : boxLower.x, (corner & 2) ? boxUpper.y : boxLower.y,
+                                  (corner & 4) ? boxUpper.z : boxLower.z);
+            const glm::vec3 world(piece.model * glm::vec4(local, 1.0f));
+            lower = glm::min(lower, world);
+            upper = glm::max(upper, world);
         }
     }
     STOA_ASSERT(lower.x <= upper.x, "acropolisBounds(): the options include no object; enable at least one");

@@ -20,10 +20,13 @@
 #include <stoa/scene/Light.hpp>
 #include <stoa/scene/Scene.hpp>
 
+#include <glm/mat4x4.hpp>
+
 #include <cstddef>
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace stoa {
 
@@ -54,6 +57,21 @@ void buildAcropolisScene(Scene& scene, const AcropolisOptions& options = {});
 /// span x, z in [-15, 15]; y runs from 0 to the temple's ridge (7.3 m).
 /// Loads the meshes (once per process) but needs no GL context.
 std::pair<glm::vec3, glm::vec3> acropolisBounds(const AcropolisOptions& options = {});
+
+/// One object of the scene as data, without GL: what buildAcropolisScene()
+/// adds, for code that works on the CPU (lab 07's ray casting). An object with
+/// several materials is several pieces of one name.
+struct AcropolisPiece {
+    std::string name;            // "floor", "column 1", ..., as buildAcropolisScene() names them
+    const Mesh* mesh = nullptr;  // object space; loaded once, kept until the process ends
+    Material material;
+    glm::mat4 model{1.0f};       // object -> world, as Object::modelMatrix() makes it
+};
+
+/// The pieces of the objects `options` includes, in buildAcropolisScene()'s
+/// order. Loads the meshes (once per process) but needs no GL context; ignores
+/// options.meshFilter.
+std::vector<AcropolisPiece> acropolisPieces(const AcropolisOptions& options = {});
 
 /// The late-afternoon sun the scene is lit with by default: low from the front
 /// right, so the columns throw long shadows back towards the temple steps.

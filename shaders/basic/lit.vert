@@ -1,8 +1,8 @@
 #version 330 core
 #include "common/frame.glsl"   // the per-frame uniform block
-// Lab 06's field of columns and statues: positions to clip space, normals and
-// uvs on to field.frag. No student code here: lab 06 grades culling and the
-// level of detail, not shading.
+// A plain lit surface for the labs whose subject is not shading (lab 06's field,
+// lab 07's Acropolis): positions to clip space, normals and uvs on to lit.frag.
+// No student code here.
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;

@@ -1,9 +1,9 @@
 #version 330 core
 #include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
-// Lab 06's field: the material's diffuse colour (or its diffuse map) lit by the
-// first directional light and the ambient light, two-sided. uTint, when
-// uTintAmount > 0, replaces part of the colour: the overview colours each object
-// by the verdict of the culling and by its level of detail.
+// The material's diffuse colour (or its diffuse map) lit by the first
+// directional light and the ambient light, two-sided. uTint, when uTintAmount > 0,
+// replaces part of the colour: lab 06's overview colours each object by the
+// verdict of the culling and its level of detail, lab 07 the picked object.
 
 in vec3 vNormalWorld;
 in vec2 vUv;
