@@ -37,15 +37,27 @@ PixelFormat transferFormatFor(GLenum internalFormat) {
     case GL_DEPTH32F_STENCIL8: return {internalFormat, GL_DEPTH_STENCIL};
     case GL_R8UI: case GL_R16UI: case GL_R32UI:
     case GL_R8I: case GL_R16I: case GL_R32I: return {internalFormat, GL_RED_INTEGER};
-    case GL_RG32UI: case GL_RG32I: return {internalFormat, GL_RG_INTEGER};
-    case GL_RGBA32UI: case GL_RGBA32I: return {internalFormat, GL_RGBA_INTEGER};
+    case GL_RG8UI: case GL_RG16UI: case GL_RG32UI:
+    case GL_RG8I: case GL_RG16I: case GL_RG32I: return {internalFormat, GL_RG_INTEGER};
+    case GL_RGBA8UI: case GL_RGBA16UI: case GL_RGBA32UI:
+    case GL_RGBA8I: case GL_RGBA16I: case GL_RGBA32I: return {internalFormat, GL_RGBA_INTEGER};
     default: return {internalFormat, GL_RGBA};
     }
 }
 
-GLenum transferTypeFor(GLenum format) {
+// The type that goes with it (the spec's table 3.2 pairs each integer format
+// with the type of its size and sign).
+GLenum transferTypeFor(GLenum internalFormat, GLenum format) {
     if (format == GL_DEPTH_STENCIL) return GL_UNSIGNED_INT_24_8;
     if (format == GL_DEPTH_COMPONENT) return GL_FLOAT;
+    switch (internalFormat) {
+    case GL_R8UI: case GL_RG8UI: case GL_RGBA8UI: return GL_UNSIGNED_BYTE;
+    case GL_R8I: case GL_RG8I: case GL_RGBA8I: return GL_BYTE;
+    case GL_R16UI: case GL_RG16UI: case GL_RGBA16UI: return GL_UNSIGNED_SHORT;
+    case GL_R16I: case GL_RG16I: case GL_RGBA16I: return GL_SHORT;
+    case GL_R32I: case GL_RG32I: case GL_RGBA32I: return GL_INT;
+    default: break;
+    }
     if (format == GL_RED_INTEGER || format == GL_RG_INTEGER || format == GL_RGBA_INTEGER) return GL_UNSIGNED_INT;
     return GL_UNSIGNED_BYTE;
 }
@@ -125,7 +137,7 @@ Texture2D Texture2D::empty(int width, int height, GLenum internalFormat, const T
     Texture2D texture;
     texture.create(width, height, internalFormat);
     STOA_GL_CALL(glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), width, height, 0, format.format,
-                              transferTypeFor(format.format), nullptr));
+                              transferTypeFor(internalFormat, format.format), nullptr));
     texture.applyOptions(options, false);
     return texture;
 }
