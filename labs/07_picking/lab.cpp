@@ -7,6 +7,10 @@
 //   view = raycast   made on the CPU, one ray per pixel (rayThroughPixel()) through
 //                    the student's BVH (buildBvh(), intersectBvh()), shaded by the
 //                    normal of the nearest hit and darkened with its distance
+//   view = ball      the shaded scene with a ball dropped into it, bouncing off the
+//                    triangles the student's BVH finds (bounce.cpp), throwing sparks
+//                    drawn as billboards (particles.glsl), after `time` seconds
+//                    simulated in frames of the lengths `frame_ms` gives
 // In the window a click (press and release without dragging) picks: the object's
 // name, and the distance along the student's ray to what it hit, are printed.
 //
@@ -16,17 +20,27 @@
 //   outline_radius = r                the outline's half-width in pixels, 1..8 (default 2)
 //   raycast_far = d                   distance at which the ray-cast picture's shading
 //                                     has faded to 30% (default 60)
+//   ball = x y z  vx vy vz            the ball's start and velocity (view = ball; default
+//                                     -1.5 6 6  0 1 -3.5: above the columns, thrown towards the temple)
+//   time = seconds                    how long to simulate, 0 to 10 (default 2)
+//   frame_ms = t1 t2 ...              the frames' lengths in milliseconds, repeated in turn
+//                                     (default 16.667: 60 frames a second)
+// In the window, `b` throws the ball from the eye along the view.
 
+#include "bounce.hpp"
 #include "picking.hpp"
 
 #include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/gl/Framebuffer.hpp>
+#include <stoa/geometry/Shapes.hpp>
+#include <stoa/gl/Buffer.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/Texture2D.hpp>
+#include <stoa/gl/VertexArray.hpp>
 #include <stoa/gl/TextureCache.hpp>
 #include <stoa/image/Image.hpp>
 #include <stoa/lab/CaseManifest.hpp>
@@ -39,12 +53,15 @@
 #include <stoa/scene/Scene.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_precision.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <optional>
@@ -53,7 +70,7 @@
 
 namespace {
 
-enum class View { Shaded, Ids, RayCast };
+enum class View { Shaded, Ids, RayCast, Ball };
 
 // One object of the scene: a name, an id, and its pieces (one per material).
 struct PickableObject {
@@ -97,11 +114,19 @@ public:
         m_idViewProgram = &resources.loadProgram("basic/image.vert", "picking/id_view.frag");
         m_outlineProgram = &resources.loadProgram("basic/image.vert", "picking/outline.frag");
         m_imageProgram = &resources.loadProgram("basic/image.vert", "basic/image.frag");
-        for (const stoa::Program* program : {m_litProgram, m_idProgram})
+        m_sparkProgram = &resources.loadProgram("picking/sparks.vert", "picking/sparks.frag");
+        for (const stoa::Program* program : {m_litProgram, m_idProgram, m_sparkProgram})
             program->bindUniformBlock(stoa::FrameUniforms::kBlockName, stoa::FrameUniforms::kBinding);
         m_frame = std::make_unique<stoa::FrameUniforms>();
         m_litUniforms = std::make_unique<stoa::ObjectUniforms>(*m_litProgram);
         m_overlay = std::make_unique<stoa::TextureOverlay>();
+        m_ballMesh = std::make_unique<stoa::GpuMesh>(stoa::shapes::sphere(1.0f, 32, 16));
+        m_ballMaterial.diffuse = glm::vec3(0.75f, 0.45f, 0.2f);   // bronze
+        m_ballMaterial.ambient = m_ballMaterial.diffuse;
+        m_sparkBuffer = std::make_unique<stoa::Buffer>(GL_ARRAY_BUFFER);
+        m_sparkArray = std::make_unique<stoa::VertexArray>();
+        m_sparkArray->attribute(0, *m_sparkBuffer, 4, GL_FLOAT, 4 * sizeof(float), 0);
+        m_sparkArray->divisor(0, 1);
 
         std::map<const stoa::Mesh*, std::shared_ptr<stoa::GpuMesh>> uploaded;
         std::map<std::string, int> objectByName;
@@ -135,8 +160,26 @@ public:
 
     void loadCase(const stoa::CaseSpec& spec) override {
         m_cameras.loadCase(spec);
-        const std::string view = spec.getChoice("view", {"shaded", "ids", "raycast"}, std::string("shaded"));
-        m_view = view == "ids" ? View::Ids : view == "raycast" ? View::RayCast : View::Shaded;
+        const std::string view = spec.getChoice("view", {"shaded", "ids", "raycast", "ball"}, std::string("shaded"));
+        m_view = view == "ids" ? View::Ids : view == "raycast" ? View::RayCast : view == "ball" ? View::Ball : View::Shaded;
+        const std::vector<float> ball = spec.has("ball") ? spec.getNumbers("ball", 6, "position x y z, velocity x y z")
+                                                         : std::vector<float>{-1.5f, 6.0f, 6.0f, 0.0f, 1.0f, -3.5f};
+        m_ballStart = stoa::Ball{{ball[0], ball[1], ball[2]}, {ball[3], ball[4], ball[5]}, 0.3f};
+        m_time = static_cast<float>(spec.getNumber("time", 2.0));
+        if (!(m_time >= 0.0f && m_time <= 10.0f)) spec.reject("time", "time must be from 0 to 10 seconds");
+        m_frameSeconds = {1.0f / 60.0f};
+        if (spec.has("frame_ms")) {
+            m_frameSeconds.clear();
+            for (const std::string& word : splitWords(spec.getString("frame_ms"))) {
+                char* end = nullptr;
+                const float milliseconds = std::strtof(word.c_str(), &end);
+                if (end == word.c_str() || *end != '\0' || !(milliseconds > 0.0f && milliseconds <= 1000.0f))
+                    spec.reject("frame_ms", "frame_ms needs frame lengths in milliseconds, each in (0, 1000], got '" + word + "'");
+                m_frameSeconds.push_back(milliseconds / 1000.0f);
+            }
+            if (m_frameSeconds.empty()) spec.reject("frame_ms", "frame_ms needs at least one frame length");
+        }
+        m_simulated = false;
         m_pick.reset();
         if (spec.has("pick")) {
             const std::vector<float> pixel = spec.getNumbers("pick", 2, "pixel x y from the top-left corner");
@@ -160,6 +203,12 @@ public:
 
         if (m_view == View::RayCast) {
             drawRayCast(size, camera);
+            return;
+        }
+        if (m_view == View::Ball) {
+            if (!m_simulated) simulateCase();
+            drawShaded(size);
+            drawBallAndSparks();
             return;
         }
         drawIds(size);
@@ -208,12 +257,32 @@ public:
             std::printf("view: %s\n", m_view == View::Shaded ? "shaded" : m_view == View::Ids ? "ID buffer" : "ray cast (your BVH, on the CPU)");
             return true;
         }
+        if (key == 'b') {
+            // Thrown from the eye along the view, 12 m/s, as the window runs (update()).
+            const stoa::Camera& camera = m_cameras.active();
+            const glm::vec3 forward = glm::normalize(camera.lookTarget() - camera.eyePosition());
+            m_simulation = stoa::Simulation{};
+            m_simulation.ball = {camera.eyePosition() + forward, forward * 12.0f, 0.3f};
+            m_view = View::Ball;
+            m_simulated = true;
+            m_live = true;
+            std::printf("ball thrown\n");
+            return true;
+        }
         return false;
+    }
+
+    void update(float seconds) override {
+        if (m_view != View::Ball || !m_live) return;
+        const int before = m_simulation.contacts;
+        stoa::advanceSimulation(m_simulation, bvh(), seconds);
+        if (m_simulation.contacts > before) std::printf("contact at %.2f s: %zu sparks alive\n", m_simulation.time, m_simulation.particles.size());
     }
 
     std::vector<std::string> keyHelp() const override {
         return {"click        pick the object under the mouse (outlined; name and distance printed)",
-                "v            switch view: shaded / ID buffer / ray cast with your BVH"};
+                "v            switch view: shaded / ID buffer / ray cast with your BVH",
+                "b            throw the ball from the eye along the view (it bounces, sparks fly)"};
     }
 
 private:
@@ -293,6 +362,66 @@ private:
         }
     }
 
+    // The case's simulation, from the start, in frames of the case's lengths.
+    void simulateCase() {
+        m_simulation = stoa::Simulation{};
+        m_simulation.ball = m_ballStart;
+        double elapsed = 0.0;
+        for (std::size_t frame = 0; elapsed < m_time; ++frame) {
+            const float seconds = std::min(m_frameSeconds[frame % m_frameSeconds.size()], static_cast<float>(m_time - elapsed));
+            stoa::advanceSimulation(m_simulation, bvh(), seconds);
+            elapsed += seconds;
+        }
+        m_simulated = true;
+        m_live = false;
+        std::printf("simulated %.3f s in %d steps: %d contacts, %zu sparks alive\n", m_simulation.time,
+                    static_cast<int>(std::lround(m_simulation.time / m_simulation.settings.step)), m_simulation.contacts,
+                    m_simulation.particles.size());
+    }
+
+    void drawBallAndSparks() {
+        // The ball, lit like the scene (the pass drawShaded() began is still on).
+        stoa::DrawItem item;
+        item.mesh = m_ballMesh.get();
+        item.model = glm::scale(glm::translate(glm::mat4(1.0f), m_simulation.ball.position), glm::vec3(m_simulation.ball.radius));
+        item.normalMatrix = glm::mat3(1.0f);
+        item.material = &m_ballMaterial;
+        m_litProgram->use();
+        m_litUniforms->apply(item);
+        m_ballMesh->draw();
+        if (m_simulation.particles.empty()) return;
+
+        // The sparks: additive, depth-tested against the scene but not written.
+        std::vector<float> sparks;
+        sparks.reserve(4 * m_simulation.particles.size());
+        for (const stoa::Particle& spark : m_simulation.particles)
+            sparks.insert(sparks.end(), {spark.position.x, spark.position.y, spark.position.z, spark.age / spark.lifetime});
+        m_sparkBuffer->upload(sparks, GL_STREAM_DRAW);
+        stoa::RenderState state;
+        state.depth.write = false;
+        state.cull = stoa::CullMode::None;
+        state.blend = stoa::BlendMode::Additive;
+        stoa::StateCache::current().apply(state);
+        m_sparkProgram->use();
+        m_sparkProgram->set("uHalfSize", 0.07f);
+        m_sparkArray->bind();
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(m_simulation.particles.size()));
+    }
+
+    static std::vector<std::string> splitWords(const std::string& text) {
+        std::vector<std::string> words;
+        std::string word;
+        for (char c : text + " ") {
+            if (c == ' ' || c == '\t') {
+                if (!word.empty()) words.push_back(word);
+                word.clear();
+            } else {
+                word += c;
+            }
+        }
+        return words;
+    }
+
     void drawRayCast(glm::ivec2 size, const stoa::Camera& camera) {
         const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
         const glm::mat4 inverse = glm::inverse(camera.projectionMatrix(aspect) * camera.viewMatrix());
@@ -333,6 +462,7 @@ private:
     const stoa::Program* m_idViewProgram = nullptr;
     const stoa::Program* m_outlineProgram = nullptr;
     const stoa::Program* m_imageProgram = nullptr;
+    const stoa::Program* m_sparkProgram = nullptr;
     std::unique_ptr<stoa::FrameUniforms> m_frame;
     std::unique_ptr<stoa::ObjectUniforms> m_litUniforms;
     std::unique_ptr<stoa::TextureOverlay> m_overlay;
@@ -343,6 +473,16 @@ private:
     std::vector<PickableObject> m_objects;
     std::vector<stoa::Triangle> m_triangles;
     std::optional<stoa::Bvh> m_bvh;
+    std::unique_ptr<stoa::GpuMesh> m_ballMesh;
+    stoa::Material m_ballMaterial;
+    std::unique_ptr<stoa::Buffer> m_sparkBuffer;
+    std::unique_ptr<stoa::VertexArray> m_sparkArray;
+    stoa::Simulation m_simulation;
+    stoa::Ball m_ballStart;
+    float m_time = 2.0f;
+    std::vector<float> m_frameSeconds{1.0f / 60.0f};
+    bool m_simulated = false;   // m_simulation holds the case's state (or the window's throw)
+    bool m_live = false;        // the window advances it
 
     View m_view = View::Shaded;
     std::optional<glm::vec2> m_pick;

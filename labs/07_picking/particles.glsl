@@ -1,0 +1,16 @@
+// Lab 07, part 4: the sparks as billboards. Read docs/labs/07_picking.md,
+// "Sparks as billboards". shaders/picking/sparks.vert draws each spark as a
+// square of four corners (corner = (-1, -1) .. (1, 1)) around its centre:
+//   positionWorld = billboardCorner(aCentre, corner, size, uView);
+// blended additively (their light adds up; the order does not matter).
+
+// The world position of corner `corner` of a square of half-side `halfSize`
+// centred on `centre` that faces the camera: its sides run along the camera's
+// right and up directions, which are the first two rows of the view matrix's
+// rotation.
+vec3 billboardCorner(vec3 centre, vec2 corner, float halfSize, mat4 view) {
+    // TODO(lab07): the camera's right and up in world space from the view
+    // matrix (glm and GLSL index [column][row]), then centre plus corner.x of
+    // right and corner.y of up, times halfSize (docs: "Sparks as billboards").
+    return STOA_NOT_IMPLEMENTED(centre);
+}
