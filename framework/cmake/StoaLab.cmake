@@ -67,6 +67,8 @@ set_property(GLOBAL PROPERTY STOA_OUT_OF_GALLERY "")
 # code compiles against the header the lab's app compiles against.
 function(_stoa_lab_folder_includes target lab)
   target_include_directories(${target} PRIVATE ${STOA_LABS_DIR}/${lab})
+  # NotImplemented records which lab a stub belongs to (stoa/core/NotImplemented.hpp).
+  target_compile_definitions(${target} PRIVATE STOA_STUDENT_LAB="${lab}")
 endfunction()
 
 # The student C++ of `lab` for one track, one OBJECT library per file, so that a

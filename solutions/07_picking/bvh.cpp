@@ -149,31 +149,39 @@ Hit intersectBvh(const Bvh& bvh, const Ray& ray) {
     std::array<Pending, kMaxBvhDepth + 2> stack;   // each level leaves one node behind at most
     int size = 0;
     float entry = 0.0f;
-    if (rayHitsBox(ray, bvh.nodes[0].box, hit.t, entry)) stack[size++] = {0, entry};
-    while (size > 0) {
-        const Pending pending = stack[--size];
-        if (pending.entry >= hit.t) continue;   // a nearer hit was found since it was pushed
-        const BvhNode& node = bvh.nodes[pending.node];
+    if (!rayHitsBox(ray, bvh.nodes[0].box, hit.t, entry)) return hit;
+    int current = 0;
+    while (true) {
+        const BvhNode& node = bvh.nodes[current];
+        int next = -1;
         if (node.count > 0) {
             for (int i = node.first; i < node.first + node.count; ++i)
                 if (rayHitsTriangle(ray, bvh.triangles[i], hit)) hit.triangle = i;
-            continue;
+        } else {
+            // The children the ray meets before the nearest hit so far: go on with
+            // the nearer one at once, and leave the farther one for later.
+            float entryLeft = 0.0f, entryRight = 0.0f;
+            const bool left = rayHitsBox(ray, bvh.nodes[node.first].box, hit.t, entryLeft);
+            const bool right = rayHitsBox(ray, bvh.nodes[node.first + 1].box, hit.t, entryRight);
+            if (left && right) {
+                const bool leftNearer = entryLeft <= entryRight;
+                next = leftNearer ? node.first : node.first + 1;
+                stack[size++] = leftNearer ? Pending{node.first + 1, entryRight} : Pending{node.first, entryLeft};
+            } else if (left) {
+                next = node.first;
+            } else if (right) {
+                next = node.first + 1;
+            }
         }
-        // The children the ray meets before the nearest hit so far; the nearer one on top.
-        float entryLeft = 0.0f, entryRight = 0.0f;
-        const bool left = rayHitsBox(ray, bvh.nodes[node.first].box, hit.t, entryLeft);
-        const bool right = rayHitsBox(ray, bvh.nodes[node.first + 1].box, hit.t, entryRight);
-        if (left && right) {
-            const bool leftNearer = entryLeft <= entryRight;
-            stack[size++] = leftNearer ? Pending{node.first + 1, entryRight} : Pending{node.first, entryLeft};
-            stack[size++] = leftNearer ? Pending{node.first, entryLeft} : Pending{node.first + 1, entryRight};
-        } else if (left) {
-            stack[size++] = {node.first, entryLeft};
-        } else if (right) {
-            stack[size++] = {node.first + 1, entryRight};
+        // Nothing below this node: the most recent node left for later that the
+        // ray enters before the nearest hit found since it was left.
+        while (next < 0 && size > 0) {
+            const Pending pending = stack[--size];
+            if (pending.entry < hit.t) next = pending.node;
         }
+        if (next < 0) return hit;
+        current = next;
     }
-    return hit;
 }
 
 } // namespace stoa

@@ -188,3 +188,22 @@ TEST_CASE("progressLine", "[grader][report]") {
     CHECK(progressLine(r, 3, 12) == "[3/12] 01_transforms/orbit_front ... passed (0.8 s)");
     CHECK(progressLine(r, 3, 12, "mistake m") == "[3/12] mistake m: 01_transforms/orbit_front ... passed (0.8 s)");
 }
+
+TEST_CASE("a lab that waits for an earlier lab's stub points to that lab", "[grader][report]") {
+    // Lab 07 draws with lab 01's cameras: its program names the stub's lab
+    // (NotImplemented::describe()), and the one-line row sends the student there.
+    const std::vector<GradeResult> results = {
+        result("07_picking", "raycast_front", GradeStatus::NotAttempted, 0, 3,
+               "not implemented: OrbitCamera::eyePosition() (lab 01_transforms)"),
+        result("07_picking", "id_buffer", GradeStatus::NotAttempted, 0, 2,
+               "not implemented: OrbitCamera::eyePosition() (lab 01_transforms)"),
+        result("06_culling", "field_walk", GradeStatus::NotAttempted, 0, 2, "not implemented: meshBoundingSphere()"),
+    };
+    std::ostringstream out;
+    printReport(out, results, summarize(results));
+    const std::string text = out.str();
+    CHECK(text.find("waits for lab 01_transforms (OrbitCamera::eyePosition() is a stub there): start with "
+                    "docs/labs/01_transforms.md") != std::string::npos);
+    CHECK(text.find("start with docs/labs/06_culling.md") != std::string::npos);
+    CHECK(text.find("start with docs/labs/07_picking.md") == std::string::npos);
+}

@@ -3,6 +3,7 @@
 
 #include "catch.hpp"
 
+#include <stoa/core/NotImplemented.hpp>
 #include <stoa/lab/LabProtocol.hpp>
 
 #include <string>
@@ -40,4 +41,15 @@ TEST_CASE("LabProtocol: a check's verdict line reads back its name, verdict and 
     CHECK_FALSE(parseCheckVerdictLine("check slice_corners: maybe: off"));
     CHECK_FALSE(parseCheckVerdictLine("2 of 3 checks hold"));
     CHECK_FALSE(parseCheckVerdictLine("check : holds: x"));
+}
+
+TEST_CASE("A stub names its lab only in another lab's program", "[lab][protocol]") {
+    const stoa::NotImplemented own("meshBoundingSphere()", "06_culling");
+    CHECK(own.describe("06_culling") == "meshBoundingSphere()");
+    const stoa::NotImplemented earlier("FirstPersonCamera::forward()", "01_transforms");
+    CHECK(earlier.describe("06_culling") == "FirstPersonCamera::forward() (lab 01_transforms)");
+    const stoa::NotImplemented framework("something()", "");
+    CHECK(framework.describe("06_culling") == "something()");
+    // Thrown outside a lab's student files, the lab is empty (STOA_STUDENT_LAB is not defined here).
+    CHECK(stoa::NotImplemented("f()").lab().empty());
 }

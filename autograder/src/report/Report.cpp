@@ -8,6 +8,17 @@ namespace stoa::grader {
 
 namespace {
 
+// The lab a not-attempted case waits for: the one its stub belongs to when the
+// lab program names it ("not implemented: FirstPersonCamera::forward() (lab
+// 01_transforms)", NotImplemented::describe()), else the case's own lab.
+std::string labToStartWith(const GradeResult& result) {
+    const std::string marker = " (lab ";
+    const std::size_t at = result.reason.rfind(marker);
+    if (at == std::string::npos || result.reason.empty() || result.reason.back() != ')') return result.lab;
+    const std::string lab = result.reason.substr(at + marker.size(), result.reason.size() - at - marker.size() - 1);
+    return lab.empty() || lab.find(' ') != std::string::npos ? result.lab : lab;
+}
+
 constexpr std::size_t kLineWidth = 100;   // the report is wrapped to this many columns
 constexpr int kOutputLinesShown = 12;
 
@@ -208,8 +219,18 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
             out << padded(result.lab, labWidth) << "  "
                 << padded("(" + std::to_string(count) + (count == 1 ? " case)" : " cases)"), caseWidth) << "  "
                 << padded(statusName(GradeStatus::NotAttempted), statusWidth) << "  "
-                << padded(formatPoints(lab->points) + " / " + formatPoints(lab->maxPoints), pointsWidth)
-                << "  start with docs/labs/" << result.lab << ".md\n";
+                << padded(formatPoints(lab->points) + " / " + formatPoints(lab->maxPoints), pointsWidth);
+            const std::string first = labToStartWith(result);
+            if (first != result.lab) {
+                // "not implemented: F (lab L)" -> "F"
+                std::string stub = result.reason.substr(0, result.reason.rfind(" (lab "));
+                const std::string prefix = "not implemented: ";
+                if (stub.compare(0, prefix.size(), prefix) == 0) stub = stub.substr(prefix.size());
+                out << "  waits for lab " << first << " (" << stub << " is a stub there): start with docs/labs/"
+                    << first << ".md\n";
+            }
+            else
+                out << "  start with docs/labs/" << result.lab << ".md\n";
             continue;
         }
         std::string row = padded(result.lab, labWidth) + "  " + padded(caseLabel(result), caseWidth) + "  " +

@@ -73,8 +73,13 @@ InputError::InputError(std::string file, int line, std::string message)
     : std::runtime_error(describe(file, line, message)),
       m_file(std::move(file)), m_line(line), m_message(std::move(message)) {}
 
-NotImplemented::NotImplemented(std::string function)
-    : std::logic_error(function + " is not implemented yet"), m_function(std::move(function)) {}
+NotImplemented::NotImplemented(std::string function, std::string lab)
+    : std::logic_error(function + " is not implemented yet"), m_function(std::move(function)), m_lab(std::move(lab)) {}
+
+std::string NotImplemented::describe(const std::string& runningLab) const {
+    if (m_lab.empty() || m_lab == runningLab) return m_function;
+    return m_function + " (lab " + m_lab + ")";
+}
 
 namespace detail {
 void assertionFailed(const char* condition, const char* message, const char* file, int line) {

@@ -70,7 +70,7 @@ int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv) {
         if (!options.renderCase.empty()) return renderHeadless(lab, info, manifest, options);
         return runWindow(lab, info, manifest, options, argc, argv);
     } catch (const NotImplemented& stub) {
-        std::fprintf(stderr, "%s\n", notImplementedLine(stub.function()).c_str());
+        std::fprintf(stderr, "%s\n", notImplementedLine(stub.describe(info.name)).c_str());
         return kExitNotAttempted;
     } catch (const ShaderNotImplemented& stub) {
         std::fprintf(stderr, "%s\n", notImplementedLine(stub.what()).c_str());

@@ -104,7 +104,7 @@ public:
             throwIfShaderStubs(m_resources);
             setStatus("");
         } catch (const NotImplemented& stub) {
-            showProblem(notImplementedText(stub.function()));
+            showProblem(notImplementedText(stub.describe(m_info.name)));
         } catch (const ShaderNotImplemented& stub) {
             showProblem(notImplementedText(stub.what()));
         }
@@ -217,7 +217,7 @@ private:
             yours = renderCaseImage(m_lab, m_resources, spec);
         } catch (const NotImplemented& stub) {
             Framebuffer::bindDefault();
-            showProblem(notImplementedText(stub.function()));
+            showProblem(notImplementedText(stub.describe(m_info.name)));
             return false;
         } catch (const ShaderNotImplemented& stub) {
             Framebuffer::bindDefault();
@@ -273,7 +273,7 @@ private:
             function();
             return;
         } catch (const NotImplemented& stub) {
-            m_inputProblem = notImplementedText(stub.function());
+            m_inputProblem = notImplementedText(stub.describe(m_info.name));
         } catch (const ShaderNotImplemented& stub) {
             m_inputProblem = notImplementedText(stub.what());
         }
@@ -383,7 +383,7 @@ int runWindow(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, c
         lab.loadCase(first);
         first.requireAllKeysUsed();
     } catch (const NotImplemented& stub) {
-        std::fprintf(stderr, "%s\n", notImplementedLine(stub.function()).c_str());
+        std::fprintf(stderr, "%s\n", notImplementedLine(stub.describe(info.name)).c_str());
         if (!options.screenshot.empty()) return kExitNotAttempted;
     }
     if (options.screenshot.empty()) handler.printHelp();
