@@ -17,24 +17,27 @@ namespace stoa {
 
 namespace {
 
-Aabb emptyBox() {
+// Helpers you may use (they are not the exercise).
+
+// A box that grows to exactly what is added to it.
+[[maybe_unused]] Aabb emptyBox() {
     const float big = std::numeric_limits<float>::max();
     return {glm::vec3(big), glm::vec3(-big)};
 }
 
-void grow(Aabb& box, const glm::vec3& point) {
+[[maybe_unused]] void grow(Aabb& box, const glm::vec3& point) {
     box.min = glm::min(box.min, point);
     box.max = glm::max(box.max, point);
 }
 
-void grow(Aabb& box, const Aabb& other) {
+[[maybe_unused]] void grow(Aabb& box, const Aabb& other) {
     box.min = glm::min(box.min, other.min);
     box.max = glm::max(box.max, other.max);
 }
 
-glm::vec3 centroid(const Triangle& triangle) { return (triangle.p0 + triangle.p1 + triangle.p2) / 3.0f; }
+[[maybe_unused]] glm::vec3 centroid(const Triangle& triangle) { return (triangle.p0 + triangle.p1 + triangle.p2) / 3.0f; }
 
-Aabb boxOf(const Triangle& triangle) {
+[[maybe_unused]] Aabb boxOf(const Triangle& triangle) {
     Aabb box = emptyBox();
     grow(box, triangle.p0);
     grow(box, triangle.p1);
