@@ -213,7 +213,7 @@ public:
             std::printf("levels of detail %s\n", m_lod ? "on" : "off");
             return true;
         }
-        if (key == 'c') {
+        if (key == 'x') {
             m_cull = m_cull == CullMode::Off ? CullMode::Both : CullMode::Off;
             std::printf("culling %s\n", m_cull == CullMode::Off ? "off" : "on (sphere, then box)");
             return true;
@@ -233,7 +233,7 @@ public:
 
     std::vector<std::string> keyHelp() const override {
         return {"o            switch view: camera / overview from above (frustum, verdict colours)",
-                "c            culling on / off",
+                "x            culling on / off",
                 "l            levels of detail on / off",
                 "k            colour the camera view by level of detail",
                 "b            show the bounding spheres"};

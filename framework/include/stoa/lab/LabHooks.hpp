@@ -5,7 +5,7 @@
 // 01-05 fail to link. Instead the lab that has the function hands it over
 // here (Lab::hooks()), and a renderer calls it when it is set:
 //
-//   // in lab 06's app (its lab.cpp)
+//   // in the app of a lab that has a culling function and draws with ForwardRenderer
 //   m_hooks.isVisible = [](const BoundingSphere& sphere, const glm::mat4& viewProjection) {
 //       return sphereInFrustum(extractFrustumPlanes(viewProjection), sphere);   // the student's
 //   };
