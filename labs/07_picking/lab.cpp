@@ -187,6 +187,7 @@ public:
                 pixel[1] >= static_cast<float>(spec.height))
                 spec.reject("pick", "pick needs a pixel inside the picture: 0 <= x < width, 0 <= y < height");
             m_pick = glm::vec2(pixel[0], pixel[1]);
+            m_pickFrame = glm::vec2(spec.width, spec.height);   // in the case's picture; the window may be larger
         }
         m_outlineRadius = spec.getIntInRange("outline_radius", 1, 8, 2);
         m_rayCastFar = static_cast<float>(spec.getNumber("raycast_far", 60.0));
@@ -213,7 +214,9 @@ public:
         }
         drawIds(size);
         if (m_pick) {
-            m_selected = idAtPixel(glm::clamp(glm::ivec2(*m_pick), glm::ivec2(0), size - 1));
+            const glm::vec2 pixel = *m_pick * glm::vec2(size) / (m_pickFrame ? *m_pickFrame : glm::vec2(size));
+            m_selected = idAtPixel(glm::clamp(glm::ivec2(pixel), glm::ivec2(0), size - 1));
+            m_pickFrame.reset();
             m_pick.reset();
         }
         if (m_view == View::Ids) {
@@ -245,6 +248,7 @@ public:
         if (event.type == stoa::InputEvent::Type::MouseUp && event.button == stoa::MouseButton::Left && m_pressedAt &&
             glm::length(event.position - *m_pressedAt) < 3.0f) {
             m_pick = event.position;
+            m_pickFrame.reset();   // window pixels
             reportPick(event.position);
         }
         if (event.type == stoa::InputEvent::Type::MouseUp) m_pressedAt.reset();
@@ -486,6 +490,7 @@ private:
 
     View m_view = View::Shaded;
     std::optional<glm::vec2> m_pick;
+    std::optional<glm::vec2> m_pickFrame;   // the picture size m_pick is given in; none: the frame's
     std::optional<glm::vec2> m_pressedAt;
     std::uint32_t m_selected = 0;
     int m_outlineRadius = 2;
