@@ -16,6 +16,7 @@
 // left out of the exact comparisons by a margin, and counted.
 
 #include "catch.hpp"
+#include "TestRandom.hpp"
 
 #include "../../labs/07_picking/picking.hpp"
 
@@ -48,30 +49,7 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// Our own float mapping of the generator (std::uniform_real_distribution
-// differs between standard libraries): 24 bits into [low, high).
-class Random {
-public:
-    explicit Random(std::uint32_t seed) : m_engine(seed) {}
-    float uniform(float low, float high) {
-        return low + (high - low) * static_cast<float>(m_engine() >> 8) * (1.0f / 16777216.0f);
-    }
-    int below(int n) { return static_cast<int>(m_engine() % static_cast<std::uint32_t>(n)); }
-    bool chance(float p) { return uniform(0.0f, 1.0f) < p; }
-    glm::vec3 inBox(const glm::vec3& low, const glm::vec3& high) {
-        return {uniform(low.x, high.x), uniform(low.y, high.y), uniform(low.z, high.z)};
-    }
-    glm::vec3 unitVector() {
-        for (;;) {
-            const glm::vec3 v = inBox(glm::vec3(-1.0f), glm::vec3(1.0f));
-            const float length = glm::length(v);
-            if (length > 0.1f && length <= 1.0f) return v / length;
-        }
-    }
-
-private:
-    std::mt19937 m_engine;
-};
+using Random = stoa::test::Random;
 
 std::string describe(const glm::vec3& v) {
     std::ostringstream out;
