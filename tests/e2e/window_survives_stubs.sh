@@ -9,35 +9,9 @@
 set -euo pipefail
 program=$1 work=$2
 
-if [ "${STOA_INSIDE_XVFB:-}" != 1 ]; then
-  mkdir -p "$work"
-  STOA_INSIDE_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
-fi
+source "$(dirname "$0")/window_common.sh"   # Xvfb, fail, start_lab_window
 
-fail() {
-  echo "FAIL: $*"
-  echo "--- the program's terminal output:"
-  cat "$work/stdout.txt" "$work/stderr.txt" 2>/dev/null || true
-  exit 1
-}
-
-# freeglut unloads the GLX driver at exit, which LeakSanitizer cannot tell apart
-# from Stoa's allocations (as in window_matches_headless.sh).
-ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" "$program" > "$work/stdout.txt" 2> "$work/stderr.txt" &
-pid=$!
-trap 'kill "$pid" 2>/dev/null || true' EXIT
-
-window=
-for _ in $(seq 1 100); do
-  window=$(xdotool search --onlyvisible --name "Stoa lab" 2>/dev/null | head -n 1 || true)
-  [ -n "$window" ] && break
-  kill -0 "$pid" 2>/dev/null || fail "the program ended before its window opened"
-  sleep 0.1
-done
-[ -n "$window" ] || fail "no window titled 'Stoa lab' appeared within 10 s"
-
-# No window manager runs under Xvfb: give the window the keyboard focus directly.
-xdotool windowfocus --sync "$window"
+start_lab_window
 sleep 0.3
 xdotool key --delay 100 4
 xdotool keydown w

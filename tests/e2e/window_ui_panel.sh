@@ -8,35 +8,13 @@ set -euo pipefail
 program=$1 work=$2
 here=$(cd "$(dirname "$0")" && pwd)
 
-if [ "${STOA_INSIDE_XVFB:-}" != 1 ]; then
-  mkdir -p "$work"
-  STOA_INSIDE_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
-fi
-
-fail() {
-  echo "FAIL: $*"
-  echo "--- the program's terminal output:"
-  cat "$work/stdout.txt" "$work/stderr.txt" 2>/dev/null || true
-  exit 1
-}
+source "$(dirname "$0")/window_common.sh"   # Xvfb, fail, start_lab_window
 
 cd "$work"
 name=$(basename "$program")
 shot="$name-screenshot.png"
 rm -f "$shot" before.png after.png
-ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" "$program" > stdout.txt 2> stderr.txt &
-pid=$!
-trap 'kill "$pid" 2>/dev/null || true' EXIT
-
-window=
-for _ in $(seq 1 100); do
-  window=$(xdotool search --onlyvisible --name "Stoa lab" 2>/dev/null | head -n 1 || true)
-  [ -n "$window" ] && break
-  kill -0 "$pid" 2>/dev/null || fail "the program ended before its window opened"
-  sleep 0.1
-done
-[ -n "$window" ] || fail "no window titled 'Stoa lab' appeared within 10 s"
-xdotool windowfocus --sync "$window"
+start_lab_window
 sleep 0.5
 
 # save NAME COUNT: F12, then wait for the COUNT-th "saved" line.

@@ -1,0 +1,36 @@
+# Sourced by the window tests (window_*.sh) after they set `program` and `work`:
+# runs the calling script again inside Xvfb (once), then gives it
+#   fail MESSAGE            print MESSAGE and the program's output, exit 1
+#   start_lab_window ARGS   start $program ARGS (output in $work/stdout.txt and
+#                           stderr.txt; killed when the script exits), wait up to
+#                           10 s for its window, focus it; sets `pid` and `window`
+# No window manager runs under Xvfb: the window gets the keyboard focus directly.
+
+if [ "${STOA_INSIDE_XVFB:-}" != 1 ]; then
+  mkdir -p "$work"
+  STOA_INSIDE_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
+fi
+
+fail() {
+  echo "FAIL: $*"
+  echo "--- the program's terminal output:"
+  cat "$work/stdout.txt" "$work/stderr.txt" 2>/dev/null || true
+  exit 1
+}
+
+start_lab_window() {
+  # freeglut unloads the GLX driver at exit, which LeakSanitizer cannot tell
+  # apart from Stoa's allocations (as in window_matches_headless.sh).
+  ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" "$program" "$@" > "$work/stdout.txt" 2> "$work/stderr.txt" &
+  pid=$!
+  trap 'kill "$pid" 2>/dev/null || true' EXIT
+  window=
+  for _ in $(seq 1 100); do
+    window=$(xdotool search --onlyvisible --name "Stoa lab" 2>/dev/null | head -n 1 || true)
+    [ -n "$window" ] && break
+    kill -0 "$pid" 2>/dev/null || fail "the program ended before its window opened"
+    sleep 0.1
+  done
+  [ -n "$window" ] || fail "no window titled 'Stoa lab' appeared within 10 s"
+  xdotool windowfocus --sync "$window"
+}
