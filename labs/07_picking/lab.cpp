@@ -15,7 +15,7 @@
 // name, and the distance along the student's ray to what it hit, are printed.
 //
 // Case keys besides the camera's (CameraRig.hpp):
-//   view = shaded | ids | raycast     what the picture shows (default shaded)
+//   view = shaded | ids | raycast | ball   what the picture shows (default shaded)
 //   pick = x y                        pick the pixel (x, y), from the top-left corner
 //   outline_radius = r                the outline's half-width in pixels, 1..8 (default 2)
 //   raycast_far = d                   distance at which the ray-cast picture's shading

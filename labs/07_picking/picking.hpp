@@ -1,7 +1,7 @@
 #pragma once
 // Lab 07: what you write for ray casting and picking, in rays.cpp and bvh.cpp
-// (the ID buffer and the outline are id_buffer.glsl). The app (lab.cpp), the
-// benchmark and the tests include this header; docs/labs/07_picking.md explains
+// (the ID buffer and the outline are id_buffer.glsl). The app (lab.cpp)
+// includes this header; docs/labs/07_picking.md explains
 // the math.
 //
 // The app collects the Acropolis's triangles in world space, builds your BVH
