@@ -203,6 +203,21 @@ public:
     void toggleCamera() override { m_cameras.toggle(); }
 
     bool keyPressed(unsigned char key) override {
+        const bool used = toggle(key);
+        if (used) std::printf("  (the last frame drew %zu of the %zu objects)\n", m_drawn, m_objects.size());
+        return used;
+    }
+
+    std::vector<std::string> keyHelp() const override {
+        return {"o            switch view: camera / overview from above (frustum, verdict colours)",
+                "x            culling on / off",
+                "l            levels of detail on / off",
+                "k            colour the camera view by level of detail",
+                "b            show the bounding spheres"};
+    }
+
+private:
+    bool toggle(unsigned char key) {
         if (key == 'o') {
             m_view = !m_view;
             std::printf("view: %s\n", m_view ? "overview (the camera's frustum from above)" : "camera");
@@ -231,15 +246,6 @@ public:
         return false;
     }
 
-    std::vector<std::string> keyHelp() const override {
-        return {"o            switch view: camera / overview from above (frustum, verdict colours)",
-                "x            culling on / off",
-                "l            levels of detail on / off",
-                "k            colour the camera view by level of detail",
-                "b            show the bounding spheres"};
-    }
-
-private:
     int addMesh(const std::filesystem::path& file, const std::vector<float>& ratios) {
         const stoa::Model model = stoa::loadObj(file);
         FieldMesh mesh;
