@@ -17,6 +17,8 @@
 //           many rays agree with ours (same triangle, or t within 1e-4).
 // Figures only, no pass/fail. Takes about 20 seconds (default runs).
 
+#include "BenchmarkTiming.hpp"
+
 #include "../../labs/07_picking/picking.hpp"
 
 #include <Geometry.hpp>
@@ -43,6 +45,8 @@
 
 namespace {
 
+using stoa::benchmark::median;
+
 constexpr int kWidth = 640;
 constexpr int kHeight = 480;
 constexpr int kBruteForceRays = 2000;
@@ -63,12 +67,6 @@ Seconds timed(const std::function<void()>& work) {
     const double cpuStart = threadSeconds();
     work();
     return {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), threadSeconds() - cpuStart};
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t middle = values.size() / 2;
-    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
 Seconds median(const std::vector<Seconds>& runs) {

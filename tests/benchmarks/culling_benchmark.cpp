@@ -22,6 +22,8 @@
 // what is off the screen). $STOA_PREVIEW_DIR: the pictures are saved there.
 // $STOA_HEADLESS picks the backend, $LP_NUM_THREADS llvmpipe's threads.
 
+#include "BenchmarkTiming.hpp"
+
 #include "../../labs/06_culling/culling.hpp"
 
 #include <stoa/app/HeadlessContext.hpp>
@@ -59,6 +61,10 @@
 
 namespace {
 
+using stoa::benchmark::Clock;
+using stoa::benchmark::median;
+using stoa::benchmark::milliseconds;
+
 constexpr int kWidth = 1280;
 constexpr int kHeight = 720;
 constexpr int kSide = 100;             // kSide x kSide columns
@@ -68,17 +74,6 @@ constexpr float kNear = 0.5f;
 constexpr float kFar = 350.0f;         // the camera sees about a tenth of the field
 constexpr double kCpuGoalNs = 20.0;
 constexpr double kFrameGoalRatio = 5.0;
-
-using Clock = std::chrono::steady_clock;
-
-double milliseconds(Clock::time_point from, Clock::time_point to) {
-    return std::chrono::duration<double, std::milli>(to - from).count();
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
 
 // The lab's generator (Numerical Recipes' LCG): the same field everywhere.
 class FieldRandom {

@@ -17,6 +17,8 @@
 // normal matrix as the model's 3x3, which is right for these uniform scales).
 // $STOA_HEADLESS picks the backend, $LP_NUM_THREADS llvmpipe's threads.
 
+#include "BenchmarkTiming.hpp"
+
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/camera/OrbitCamera.hpp>
 #include <stoa/core/Paths.hpp>
@@ -46,21 +48,14 @@
 
 namespace {
 
+using stoa::benchmark::Clock;
+using stoa::benchmark::median;
+using stoa::benchmark::milliseconds;
+
 constexpr int kWidth = 1280;
 constexpr int kHeight = 720;
 constexpr int kSide = 100;   // kSide x kSide objects
 constexpr float kSpacing = 1.2f;
-
-using Clock = std::chrono::steady_clock;
-
-double milliseconds(Clock::time_point from, Clock::time_point to) {
-    return std::chrono::duration<double, std::milli>(to - from).count();
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
 
 struct Measured {
     const char* name;

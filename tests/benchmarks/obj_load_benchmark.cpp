@@ -6,6 +6,8 @@
 // loaded model, and the throughput in MB/s of file size (by each median; on a
 // shared machine the CPU time is the steadier figure).
 
+#include "BenchmarkTiming.hpp"
+
 #include <Acropolis.hpp>
 
 #include <stoa/geometry/ObjLoader.hpp>
@@ -26,16 +28,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using stoa::benchmark::median;
+
 double threadSeconds() {
     timespec now{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
     return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t middle = values.size() / 2;
-    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
 int usage() {

@@ -13,6 +13,8 @@
 // the ratio uses CPU time, which a busy machine disturbs less.
 // The number of llvmpipe threads follows $LP_NUM_THREADS (Mesa's default: one per core).
 
+#include "BenchmarkTiming.hpp"
+
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/camera/OrbitCamera.hpp>
 #include <stoa/core/Paths.hpp>
@@ -34,6 +36,9 @@
 
 namespace {
 
+using stoa::benchmark::median;
+using stoa::benchmark::milliseconds;
+
 constexpr int kWidth = 1280;
 constexpr int kHeight = 720;
 constexpr int kMapSize = 2048;
@@ -43,11 +48,6 @@ double processSeconds() {
     timespec now{};
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);   // all threads: llvmpipe rasterizes on several
     return now.tv_sec + now.tv_nsec * 1e-9;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
 }
 
 // One thing to time: its wall and CPU milliseconds, one per round.
