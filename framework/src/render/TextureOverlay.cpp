@@ -6,14 +6,14 @@
 
 namespace stoa {
 
-void TextureOverlay::draw(const Program& program, const glm::ivec4& rectangle) const {
+void TextureOverlay::draw(const Program& program, const glm::ivec4& rectangle, const RenderState& state) const {
     STOA_ASSERT(rectangle.z > 0 && rectangle.w > 0,
                 "TextureOverlay::draw(): the rectangle must not be empty (x, y, width, height in pixels)");
     // A pass of its own over the rectangle, into what is bound: no depth test,
     // nothing cleared. The next pass states its own viewport and state.
     PassDescription pass;
     pass.viewport = rectangle;
-    pass.state = RenderState::overlay();
+    pass.state = state;
     beginPass(pass);
     program.use();
     // Core profile draws need a bound vertex array even without attributes.

@@ -10,6 +10,7 @@
 // The program's vertex shader makes the rectangle from gl_VertexID alone (no
 // vertex buffer): shaders/shadows/depth_view.vert is one.
 
+#include <stoa/gl/RenderState.hpp>
 #include <stoa/gl/VertexArray.hpp>
 
 #include <glm/vec4.hpp>
@@ -27,7 +28,10 @@ public:
     /// (x, y from the bottom-left corner, width, height; pixels) of the bound
     /// framebuffer, as a pass of its own (RenderState::overlay(): no depth
     /// test, nothing culled). The pass after it states its own viewport and state.
-    void draw(const Program& program, const glm::ivec4& rectangle) const;
+    void draw(const Program& program, const glm::ivec4& rectangle) const { draw(program, rectangle, RenderState::overlay()); }
+    /// The same with `state` instead (a full-screen lighting pass that adds
+    /// to the target: BlendMode::Additive).
+    void draw(const Program& program, const glm::ivec4& rectangle, const RenderState& state) const;
 
 private:
     VertexArray m_vertexArray;

@@ -1,0 +1,168 @@
+#pragma once
+// Deferred shading's passes put together (labs 08-09), and the naive forward
+// renderer it is measured against:
+//
+//   forward   every fragment of every triangle loops over all the lights
+//   volumes   geometry pass into the G-buffer; ambient pass; one sphere per
+//             light, each fragment of which lights the pixel under it
+//   tiled     geometry pass; ambient pass; the lights sorted into screen tiles
+//             on the CPU; one full-screen pass, each pixel looping over its tile's lights
+//
+// All three light with shaders/deferred/lighting.glsl into a 16-bit float
+// light buffer, then copy it, clamped, into the framebuffer bound when
+// render() is called. Lab 08's app and benchmark and lab 09's app draw through it.
+//
+// The student's functions (DeferredShading.hpp) reach it at run time, as
+// DeferredLabCode, from the program that links them; the student's GLSL
+// (08_deferred/g_buffer.glsl) is in the programs the lab loads.
+//
+//   DeferredRenderer renderer(programs, DeferredLabCode::fromLab08());   // in lab 08's program
+//   renderer.render(drawList, lights, lighting, camera, size, settings);
+
+#include <stoa/gl/BufferTexture.hpp>
+#include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/GpuMesh.hpp>
+#include <stoa/gl/RenderState.hpp>
+#include <stoa/render/DeferredShading.hpp>
+#include <stoa/render/FrameUniforms.hpp>
+#include <stoa/render/GBuffer.hpp>
+#include <stoa/render/TextureOverlay.hpp>
+#include <stoa/scene/DrawList.hpp>
+#include <stoa/scene/Light.hpp>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace stoa {
+
+class Camera;
+class ObjectUniforms;
+class Program;
+class Texture2D;
+
+enum class LightingMode { Forward, Volumes, Tiled };
+
+/// What render() shows: the lit picture, a channel of the G-buffer, or a heat map.
+enum class DeferredView {
+    Final,       // the lit picture
+    Albedo,      // G-buffer albedo
+    Normals,     // the unpacked view-space normals, n * 0.5 + 0.5
+    Positions,   // the world position rebuilt from depth: fract() of each coordinate, a 1 m grid
+    Specular,    // G-buffer specular strength
+    Overdraw,    // how many light volumes cover each pixel (volumes' state, heat map)
+    TileCounts   // how many lights each tile's list holds (heat map)
+};
+
+/// "forward", "volumes", "tiled"; "final", "albedo", ...
+const char* toString(LightingMode mode);
+const char* toString(DeferredView view);
+
+/// The programs, loaded by the lab (their search path holds the student's
+/// GLSL). They must outlive the renderer.
+struct DeferredPrograms {
+    const Program* geometry = nullptr;      // deferred/geometry.vert + deferred/geometry.frag
+    const Program* forward = nullptr;       // deferred/forward.vert + deferred/forward.frag
+    const Program* ambient = nullptr;       // basic/image.vert + deferred/ambient.frag
+    const Program* lightVolume = nullptr;   // deferred/light_volume.vert + deferred/light_volume.frag
+    const Program* tiled = nullptr;         // basic/image.vert + deferred/tiled.frag
+    const Program* views = nullptr;         // basic/image.vert + deferred/views.frag
+};
+
+/// Lab 08's functions, handed to the renderer at run time.
+struct DeferredLabCode {
+    std::function<float(const PointLight&, float)> lightReach;
+    std::function<RenderState()> lightVolumeState;
+    std::function<TileLightLists(const std::vector<LightSphere>&, const glm::mat4&, float, const TileGrid&)>
+        buildTileLightLists;
+
+    /// The three as the calling program links them. Inline, so that only a
+    /// program that calls it (lab 08's, lab 09's) needs lab 08's code.
+    static DeferredLabCode fromLab08() {
+        return {&stoa::lightReach, &stoa::lightVolumeState, &stoa::buildTileLightLists};
+    }
+};
+
+/// The light besides the point lights: ambient and one directional light.
+struct SceneLighting {
+    glm::vec3 ambient{0.06f, 0.07f, 0.1f};
+    DirectionalLight moon{{0.4f, -1.0f, -0.6f}, {0.1f, 0.11f, 0.16f}};
+    glm::vec3 sky{0.015f, 0.02f, 0.045f};
+};
+
+struct DeferredSettings {
+    LightingMode mode = LightingMode::Volumes;
+    DeferredView view = DeferredView::Final;
+    float cutoff = 1.0f / 64.0f;   // where a light's brightest channel counts as gone (lighting.glsl)
+    int tileSize = 16;             // pixels
+    float shininess = 24.0f;       // the Blinn-Phong exponent of every surface
+    float heatScale = 64.0f;       // the light count the heat maps show as white
+    /// Lab 09: the ambient occlusion, one value per pixel in .r, multiplying
+    /// the ambient light. nullptr: none (1 everywhere).
+    const Texture2D* ambientOcclusion = nullptr;
+};
+
+/// What the last render() did, for the window's title line and the benchmark.
+struct DeferredStats {
+    int lights = 0;              // point lights given
+    int lightsDrawn = 0;         // volumes: spheres drawn (reach > 0 and in front of the camera)
+    long tileListEntries = 0;    // tiled: the lists' total length
+};
+
+class DeferredRenderer {
+public:
+    /// Needs a current context.
+    DeferredRenderer(const DeferredPrograms& programs, DeferredLabCode code);
+    ~DeferredRenderer();
+
+    /// The whole frame at `size` pixels into the framebuffer bound when called.
+    void render(const DrawList& items, const std::vector<PointLight>& lights, const SceneLighting& lighting,
+                const Camera& camera, glm::ivec2 size, const DeferredSettings& settings);
+
+    /// The geometry pass alone into the G-buffer (binds it; the caller binds
+    /// its own target again). For lab 09, which reads the G-buffer next, and the benchmark.
+    void renderGeometry(const DrawList& items, const Camera& camera, glm::ivec2 size);
+
+    const GBuffer& gBuffer() const { return m_gBuffer; }
+    const DeferredStats& stats() const { return m_stats; }
+    /// The lists of the last tiled frame.
+    const TileLightLists& tileLists() const { return m_tiles; }
+
+private:
+    void updateFrame(const Camera& camera, glm::ivec2 size, const SceneLighting& lighting);
+    void prepareTargets(glm::ivec2 size);
+    void lightAccumulation(const std::vector<PointLight>& lights, const SceneLighting& lighting, const Camera& camera,
+                           const DeferredSettings& settings);
+    void drawForward(const DrawList& items, const std::vector<PointLight>& lights, const SceneLighting& lighting,
+                     const DeferredSettings& settings);
+    void drawAmbient(const SceneLighting& lighting, const DeferredSettings& settings);
+    void drawVolumes(const std::vector<PointLight>& lights, const DeferredSettings& settings, bool countOnly);
+    void drawTiled(const std::vector<PointLight>& lights, const DeferredSettings& settings, bool countOnly);
+    void uploadLights(const std::vector<PointLight>& lights, const std::vector<float>& reaches);
+    void setGBufferUniforms(const Program& program) const;
+    void present(GLuint target, const DeferredSettings& settings);
+
+    DeferredPrograms m_programs;
+    DeferredLabCode m_code;
+    GBuffer m_gBuffer;
+    Framebuffer m_lightBuffer;       // RGBA16F and its own depth-stencil, a copy of the G-buffer's
+    FrameUniforms m_frame;
+    std::unique_ptr<ObjectUniforms> m_geometryUniforms;
+    std::unique_ptr<ObjectUniforms> m_forwardUniforms;
+    GpuMesh m_sphere;                // radius 1
+    float m_sphereEnclosing = 1.0f;  // scale that makes the flat-faced mesh enclose the unit sphere
+    BufferTexture m_lightTexels;
+    BufferTexture m_tileOffsets;
+    BufferTexture m_tileLights;
+    TextureOverlay m_overlay;
+    TileLightLists m_tiles;
+    DeferredStats m_stats;
+    glm::mat4 m_view{1.0f}, m_projection{1.0f};
+    float m_near = 0.1f;
+    glm::ivec2 m_size{0};
+};
+
+} // namespace stoa

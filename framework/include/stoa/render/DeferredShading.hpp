@@ -1,0 +1,80 @@
+#pragma once
+// Lab 08's functions for deferred shading (docs/labs/08_deferred.md): how far
+// a point light reaches, the fixed-function state of the light-volume pass,
+// and which screen tiles each light can touch. The student defines them in
+// labs/08_deferred/; DeferredRenderer reaches them at run time through
+// DeferredLabCode, so that the labs before 08 link without them.
+//
+// Tiles count from the bottom-left corner of the picture, as gl_FragCoord
+// does: tile (0, 0) holds pixels x, y in [0, tileSize).
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace stoa {
+
+struct PointLight;
+struct RenderState;
+
+/// The picture cut into square tiles of `tileSize` pixels; the last column
+/// and row may be cut short by the picture's edge.
+struct TileGrid {
+    glm::ivec2 viewport{1};   // the picture, pixels
+    int tileSize = 16;        // pixels
+
+    glm::ivec2 tiles() const { return (viewport + glm::ivec2(tileSize - 1)) / tileSize; }
+    int tileCount() const { return tiles().x * tiles().y; }
+    /// The index of tile (column, row): row * tiles().x + column.
+    int index(glm::ivec2 tile) const { return tile.y * tiles().x + tile.x; }
+};
+
+/// The tiles a light can touch: columns first.x..last.x and rows
+/// first.y..last.y, both ends included. Empty when last < first on an axis.
+struct TileRange {
+    glm::ivec2 first{0};
+    glm::ivec2 last{-1};
+    bool empty() const { return last.x < first.x || last.y < first.y; }
+};
+
+/// A point light as the tiled pass sees it: its centre in view space (the
+/// camera at the origin looking down -z) and its reach (lightReach()).
+struct LightSphere {
+    glm::vec3 centerView{0.0f};
+    float reach = 0.0f;
+};
+
+/// For every tile, the lights that can reach it: tile t's lights are
+/// lights[offsets[t]] .. lights[offsets[t + 1] - 1], indices into the list
+/// buildTileLightLists() was given, in increasing order.
+struct TileLightLists {
+    TileGrid grid;
+    std::vector<int> offsets;   // grid.tileCount() + 1 entries, offsets[0] = 0
+    std::vector<int> lights;
+};
+
+// ---- Lab 08's student functions (labs/08_deferred/) ---------------------
+
+/// The distance d >= 0 at which the light's brightest colour channel,
+/// attenuated by 1 / (constant + linear d + quadratic d^2), has fallen to
+/// `cutoff`; 0 when it is never brighter than `cutoff`. (light_volumes.cpp)
+float lightReach(const PointLight& light, float cutoff);
+
+/// The state the light-volume pass draws each light's sphere with: which
+/// faces, which depth test, what blending, so that each lit pixel gets the
+/// light once, also when the camera is inside the sphere. (light_volumes.cpp)
+RenderState lightVolumeState();
+
+/// The tiles of `grid` that a light's sphere can cover, seen through
+/// `projection` (view -> clip, near plane at distance `near`): conservative (a
+/// tile it covers is never left out) and empty when the sphere lies wholly
+/// behind the near plane or outside the picture. (tiled_lights.cpp)
+TileRange lightTileRange(const LightSphere& light, const glm::mat4& projection, float near, const TileGrid& grid);
+
+/// Every tile's list of the lights whose lightTileRange() holds it. (tiled_lights.cpp)
+TileLightLists buildTileLightLists(const std::vector<LightSphere>& lights, const glm::mat4& projection, float near,
+                                   const TileGrid& grid);
+
+} // namespace stoa

@@ -1,0 +1,53 @@
+#include <stoa/gl/BufferTexture.hpp>
+
+#include <utility>
+
+namespace stoa {
+
+BufferTexture::BufferTexture(GLenum internalFormat) : m_buffer(GL_TEXTURE_BUFFER), m_format(internalFormat) {
+    glGenTextures(1, &m_texture);
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    upload(zero, sizeof(zero));
+}
+
+BufferTexture::~BufferTexture() { destroy(); }
+
+BufferTexture::BufferTexture(BufferTexture&& other) noexcept
+    : m_buffer(std::move(other.m_buffer)), m_texture(std::exchange(other.m_texture, 0)), m_format(other.m_format) {}
+
+BufferTexture& BufferTexture::operator=(BufferTexture&& other) noexcept {
+    if (this != &other) {
+        destroy();
+        m_buffer = std::move(other.m_buffer);
+        m_texture = std::exchange(other.m_texture, 0);
+        m_format = other.m_format;
+    }
+    return *this;
+}
+
+void BufferTexture::destroy() {
+    if (m_texture != 0) glDeleteTextures(1, &m_texture);
+    m_texture = 0;
+}
+
+void BufferTexture::upload(const void* data, std::size_t bytes) {
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    if (bytes == 0) {
+        data = zero;
+        bytes = sizeof(zero);
+    }
+    m_buffer.upload(data, bytes, GL_STREAM_DRAW);
+    // Attaching again after glBufferData: some drivers keep the old storage otherwise.
+    GLint previous = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_BUFFER, &previous);
+    glBindTexture(GL_TEXTURE_BUFFER, m_texture);
+    glTexBuffer(GL_TEXTURE_BUFFER, m_format, m_buffer.id());
+    glBindTexture(GL_TEXTURE_BUFFER, static_cast<GLuint>(previous));
+}
+
+void BufferTexture::bind(int unit) const {
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    glBindTexture(GL_TEXTURE_BUFFER, m_texture);
+}
+
+} // namespace stoa

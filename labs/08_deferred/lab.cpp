@@ -1,0 +1,212 @@
+// Lab 08 app: the Acropolis at night with hundreds of small lights drifting over
+// it (stoa/scene/WanderingLights.hpp), lit three ways by stoa::DeferredRenderer:
+//   renderer = forward   every fragment loops over all the lights (the baseline; no student code)
+//   renderer = volumes   the G-buffer (your g_buffer.glsl), then one sphere per light of
+//                        radius lightReach() drawn with lightVolumeState()
+//   renderer = tiled     the G-buffer, then one full-screen pass over the lists of
+//                        buildTileLightLists()
+// The scene is the Acropolis with six more statues along its path (about 290,000
+// triangles), so that the geometry is at the scale deferred shading is made for.
+//
+// Case keys besides the camera's (CameraRig.hpp):
+//   renderer = forward | volumes | tiled     (default volumes)
+//   view = final | albedo | normals | positions | specular | overdraw | tiles
+//                                 what the picture shows (default final); overdraw: how many
+//                                 light volumes cover each pixel; tiles: each tile's light count
+//   lights = n                    how many wandering lights, 0..1024 (default 256)
+//   seed = n                      their paths and colours (default 1)
+//   time = seconds                where they are on their paths, 0..1000 (default 0)
+//   tile_size = pixels            8..64 (default 16)
+//   extra_light = x y z  r g b    one more light at a fixed place (world metres, linear colour)
+//   cutoff = c                    the brightness at which a light counts as gone, (0, 0.5] (default 1/64)
+//   heat_scale = n                the count the heat maps show as white, 1..1024 (default 64)
+// In the window: r switches renderer, v the view, space stops and starts the lights.
+
+#include <stoa/camera/CameraRig.hpp>
+#include <stoa/gl/GpuMesh.hpp>
+#include <stoa/gl/Program.hpp>
+#include <stoa/gl/TextureCache.hpp>
+#include <stoa/lab/CaseManifest.hpp>
+#include <stoa/lab/LabApp.hpp>
+#include <stoa/render/DeferredRenderer.hpp>
+#include <stoa/render/DeferredShading.hpp>
+#include <stoa/scene/AcropolisScene.hpp>
+#include <stoa/scene/WanderingLights.hpp>
+
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace {
+
+const std::vector<std::string> kRenderers{"forward", "volumes", "tiled"};
+const std::vector<std::string> kViews{"final", "albedo", "normals", "positions", "specular", "overdraw", "tiles"};
+
+// The scene's pieces: acropolisPieces() and six more statues on pedestals,
+// three each side of the path from the front of the floor to the columns.
+std::vector<stoa::AcropolisPiece> nightAcropolis() {
+    std::vector<stoa::AcropolisPiece> pieces = stoa::acropolisPieces();
+    const stoa::AcropolisPiece* pedestal = nullptr;
+    for (const stoa::AcropolisPiece& piece : pieces) {
+        if (piece.name == "pedestal") pedestal = &piece;
+    }
+    std::vector<stoa::AcropolisPiece> extra;
+    for (int i = 0; i < 6; ++i) {
+        const float side = i % 2 == 0 ? -1.0f : 1.0f;
+        const glm::vec3 place(side * 3.2f, 0.0f, 2.0f + 3.5f * static_cast<float>(i / 2));
+        const float turn = side > 0.0f ? -90.0f : 90.0f;   // facing the path
+        const glm::mat4 base = glm::rotate(glm::translate(glm::mat4(1.0f), place), glm::radians(turn), glm::vec3(0, 1, 0));
+        const std::string name = "statue " + std::to_string(i + 2);
+        if (pedestal) {
+            stoa::AcropolisPiece block = *pedestal;
+            block.name = name;
+            block.model = glm::scale(glm::translate(base, glm::vec3(0.0f, 0.4f, 0.0f)), glm::vec3(0.9f, 0.8f, 0.9f));
+            extra.push_back(block);
+        }
+        for (const stoa::AcropolisPiece& piece : pieces)
+            if (piece.name == "statue") {
+                stoa::AcropolisPiece copy = piece;
+                copy.name = name;
+                copy.model = glm::translate(base, glm::vec3(0.0f, 0.8f, 0.0f));
+                extra.push_back(copy);
+            }
+    }
+    pieces.insert(pieces.end(), extra.begin(), extra.end());
+    return pieces;
+}
+
+class DeferredLab : public stoa::Lab {
+public:
+    void initialize(stoa::LabResources& resources) override {
+        stoa::DeferredPrograms programs;
+        programs.geometry = &resources.loadProgram("deferred/geometry.vert", "deferred/geometry.frag");
+        programs.forward = &resources.loadProgram("deferred/forward.vert", "deferred/forward.frag");
+        programs.ambient = &resources.loadProgram("basic/image.vert", "deferred/ambient.frag");
+        programs.lightVolume = &resources.loadProgram("deferred/light_volume.vert", "deferred/light_volume.frag");
+        programs.tiled = &resources.loadProgram("basic/image.vert", "deferred/tiled.frag");
+        programs.views = &resources.loadProgram("basic/image.vert", "deferred/views.frag");
+        m_renderer = std::make_unique<stoa::DeferredRenderer>(programs, stoa::DeferredLabCode::fromLab08());
+
+        std::map<const stoa::Mesh*, std::shared_ptr<stoa::GpuMesh>> uploaded;
+        std::size_t triangles = 0;
+        for (const stoa::AcropolisPiece& piece : nightAcropolis()) {
+            std::shared_ptr<stoa::GpuMesh>& mesh = uploaded[piece.mesh];
+            if (!mesh) mesh = std::make_shared<stoa::GpuMesh>(*piece.mesh);
+            m_meshes.push_back(mesh);
+            m_materials.push_back(std::make_unique<stoa::Material>(piece.material));
+            stoa::DrawItem item;
+            item.mesh = mesh.get();
+            item.model = piece.model;
+            item.normalMatrix = glm::inverseTranspose(glm::mat3(piece.model));
+            item.material = m_materials.back().get();
+            if (!piece.material.diffuseMap.empty()) {
+                m_textures.push_back(stoa::TextureCache::shared().load(piece.material.diffuseMap));
+                item.diffuseMap = m_textures.back().get();
+            }
+            if (!piece.material.specularMap.empty()) {
+                m_textures.push_back(stoa::TextureCache::shared().load(piece.material.specularMap));
+                item.specularMap = m_textures.back().get();
+            }
+            m_items.push_back(item);
+            triangles += piece.mesh->triangleCount();
+        }
+        std::printf("scene: %zu triangles in %zu draws\n", triangles, m_items.size());
+    }
+
+    void loadCase(const stoa::CaseSpec& spec) override {
+        m_cameras.loadCase(spec);
+        const std::string renderer = spec.getChoice("renderer", kRenderers, std::string("volumes"));
+        m_settings.mode = renderer == "forward" ? stoa::LightingMode::Forward
+                          : renderer == "tiled" ? stoa::LightingMode::Tiled
+                                                : stoa::LightingMode::Volumes;
+        const std::string view = spec.getChoice("view", kViews, std::string("final"));
+        for (std::size_t i = 0; i < kViews.size(); ++i)
+            if (view == kViews[i]) m_settings.view = static_cast<stoa::DeferredView>(i);
+        m_lightOptions.count = spec.getIntInRange("lights", 0, 1024, 256);
+        m_lightOptions.seed = static_cast<std::uint32_t>(spec.getIntInRange("seed", 0, 1000000, 1));
+        m_time = static_cast<float>(spec.getNumber("time", 0.0));
+        if (!(m_time >= 0.0f && m_time <= 1000.0f)) spec.reject("time", "time must be from 0 to 1000 seconds");
+        m_settings.tileSize = spec.getIntInRange("tile_size", 8, 64, 16);
+        m_settings.cutoff = static_cast<float>(spec.getNumber("cutoff", 1.0 / 64.0));
+        if (!(m_settings.cutoff > 0.0f && m_settings.cutoff <= 0.5f)) spec.reject("cutoff", "cutoff must be in (0, 0.5]");
+        m_settings.heatScale = static_cast<float>(spec.getIntInRange("heat_scale", 1, 1024, 64));
+        m_extraLight.reset();
+        if (spec.has("extra_light")) {
+            const std::vector<float> v = spec.getNumbers("extra_light", 6, "position x y z, colour r g b");
+            stoa::PointLight light;
+            light.position = {v[0], v[1], v[2]};
+            light.color = {v[3], v[4], v[5]};
+            light.attenuation = glm::vec3(1.0f, 1.0f, 5.0f);
+            if (!(v[3] >= 0.0f && v[4] >= 0.0f && v[5] >= 0.0f)) spec.reject("extra_light", "the colour must not be negative");
+            m_extraLight = light;
+        }
+        m_moving = false;
+    }
+
+    void render(glm::ivec2 size) override {
+        std::vector<stoa::PointLight> lights = stoa::wanderingLights(m_lightOptions, m_time);
+        if (m_extraLight) lights.push_back(*m_extraLight);
+        m_renderer->render(m_items, lights, m_lighting, m_cameras.active(), size, m_settings);
+    }
+
+    stoa::Camera& activeCamera() override { return m_cameras.active(); }
+    void toggleCamera() override { m_cameras.toggle(); }
+
+    bool keyPressed(unsigned char key) override {
+        if (key == 'r') {
+            const int next = (static_cast<int>(m_settings.mode) + 1) % 3;
+            m_settings.mode = static_cast<stoa::LightingMode>(next);
+            std::printf("renderer: %s\n", stoa::toString(m_settings.mode));
+            return true;
+        }
+        if (key == 'v') {
+            const int next = (static_cast<int>(m_settings.view) + 1) % static_cast<int>(kViews.size());
+            m_settings.view = static_cast<stoa::DeferredView>(next);
+            std::printf("view: %s\n", stoa::toString(m_settings.view));
+            return true;
+        }
+        if (key == ' ') {
+            m_moving = !m_moving;
+            std::printf("lights %s\n", m_moving ? "moving" : "stopped");
+            return true;
+        }
+        return false;
+    }
+
+    void update(float seconds) override {
+        if (m_moving) m_time += seconds;
+    }
+
+    std::vector<std::string> keyHelp() const override {
+        return {"r            switch renderer: forward (all lights per fragment) / light volumes / tiles",
+                "v            switch view: final / albedo / normals / positions / specular / overdraw / tiles",
+                "space        start and stop the lights"};
+    }
+
+private:
+    stoa::CameraRig m_cameras;
+    std::unique_ptr<stoa::DeferredRenderer> m_renderer;
+    std::vector<std::shared_ptr<stoa::GpuMesh>> m_meshes;
+    std::vector<std::unique_ptr<stoa::Material>> m_materials;
+    std::vector<std::shared_ptr<const stoa::Texture2D>> m_textures;
+    stoa::DrawList m_items;
+    stoa::DeferredSettings m_settings;
+    stoa::SceneLighting m_lighting;
+    stoa::WanderingLightsOptions m_lightOptions;
+    std::optional<stoa::PointLight> m_extraLight;
+    float m_time = 0.0f;
+    bool m_moving = false;
+};
+
+} // namespace
+
+int main(int argc, char** argv) {
+    DeferredLab lab;
+    return stoa::runLab(lab, STOA_LAB_BUILD_INFO, argc, argv);
+}

@@ -1,0 +1,29 @@
+#version 330 core
+#include "common/frame.glsl"
+#include "08_deferred/g_buffer.glsl"
+#include "deferred/gbuffer_read.glsl"
+#include "deferred/lighting.glsl"
+// Lab 08's light-volume pass: each fragment of a light's sphere lights the
+// G-buffer pixel under it with that one light; the state the spheres are drawn
+// with (lightVolumeState()) decides which fragments there are. With
+// uCountOnly, each fragment adds 1 instead (the overdraw heat map).
+
+uniform vec3 uLightPosition;     // view space
+uniform vec3 uLightColor;
+uniform vec3 uLightAttenuation;
+uniform float uCutoff;
+uniform float uShininess;
+uniform bool uCountOnly;
+
+out vec4 fragColor;
+
+void main() {
+    if (uCountOnly) {
+        fragColor = vec4(1.0);
+        return;
+    }
+    Surface surface = readSurface(ivec2(gl_FragCoord.xy));
+    if (surface.sky) discard;
+    fragColor = vec4(pointLightShade(surface.position, surface.normal, surface.albedo, surface.specular, uShininess,
+                                     uLightPosition, uLightColor, uLightAttenuation, uCutoff), 1.0);
+}
