@@ -23,21 +23,18 @@
 // In the window: r switches renderer, v the view, space stops and starts the lights.
 
 #include <stoa/camera/CameraRig.hpp>
-#include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
-#include <stoa/gl/TextureCache.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/DeferredRenderer.hpp>
 #include <stoa/render/DeferredShading.hpp>
 #include <stoa/scene/AcropolisScene.hpp>
+#include <stoa/scene/PieceDrawList.hpp>
 #include <stoa/scene/WanderingLights.hpp>
 
-#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -93,30 +90,8 @@ public:
         programs.views = &resources.loadProgram("basic/image.vert", "deferred/views.frag");
         m_renderer = std::make_unique<stoa::DeferredRenderer>(programs, stoa::DeferredLabCode::fromLab08());
 
-        std::map<const stoa::Mesh*, std::shared_ptr<stoa::GpuMesh>> uploaded;
-        std::size_t triangles = 0;
-        for (const stoa::AcropolisPiece& piece : nightAcropolis()) {
-            std::shared_ptr<stoa::GpuMesh>& mesh = uploaded[piece.mesh];
-            if (!mesh) mesh = std::make_shared<stoa::GpuMesh>(*piece.mesh);
-            m_meshes.push_back(mesh);
-            m_materials.push_back(std::make_unique<stoa::Material>(piece.material));
-            stoa::DrawItem item;
-            item.mesh = mesh.get();
-            item.model = piece.model;
-            item.normalMatrix = glm::inverseTranspose(glm::mat3(piece.model));
-            item.material = m_materials.back().get();
-            if (!piece.material.diffuseMap.empty()) {
-                m_textures.push_back(stoa::TextureCache::shared().load(piece.material.diffuseMap));
-                item.diffuseMap = m_textures.back().get();
-            }
-            if (!piece.material.specularMap.empty()) {
-                m_textures.push_back(stoa::TextureCache::shared().load(piece.material.specularMap));
-                item.specularMap = m_textures.back().get();
-            }
-            m_items.push_back(item);
-            triangles += piece.mesh->triangleCount();
-        }
-        std::printf("scene: %zu triangles in %zu draws\n", triangles, m_items.size());
+        m_scene = std::make_unique<stoa::PieceDrawList>(nightAcropolis());
+        std::printf("scene: %zu triangles in %zu draws\n", m_scene->triangleCount(), m_scene->items().size());
     }
 
     void loadCase(const stoa::CaseSpec& spec) override {
@@ -152,7 +127,7 @@ public:
     void render(glm::ivec2 size) override {
         std::vector<stoa::PointLight> lights = stoa::wanderingLights(m_lightOptions, m_time);
         if (m_extraLight) lights.push_back(*m_extraLight);
-        m_renderer->render(m_items, lights, m_lighting, m_cameras.active(), size, m_settings);
+        m_renderer->render(m_scene->items(), lights, m_lighting, m_cameras.active(), size, m_settings);
     }
 
     stoa::Camera& activeCamera() override { return m_cameras.active(); }
@@ -192,10 +167,7 @@ public:
 private:
     stoa::CameraRig m_cameras;
     std::unique_ptr<stoa::DeferredRenderer> m_renderer;
-    std::vector<std::shared_ptr<stoa::GpuMesh>> m_meshes;
-    std::vector<std::unique_ptr<stoa::Material>> m_materials;
-    std::vector<std::shared_ptr<const stoa::Texture2D>> m_textures;
-    stoa::DrawList m_items;
+    std::unique_ptr<stoa::PieceDrawList> m_scene;
     stoa::DeferredSettings m_settings;
     stoa::SceneLighting m_lighting;
     stoa::WanderingLightsOptions m_lightOptions;

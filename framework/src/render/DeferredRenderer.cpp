@@ -119,7 +119,7 @@ void DeferredRenderer::render(const DrawList& items, const std::vector<PointLigh
     m_stats = DeferredStats{};
     m_stats.lights = static_cast<int>(lights.size());
     const bool needsGBuffer = settings.mode != LightingMode::Forward || settings.view != DeferredView::Final;
-    if (needsGBuffer) {
+    if (needsGBuffer && !settings.reuseGBuffer) {
         renderGeometry(items, camera, size);
     } else {
         prepareTargets(size);
@@ -161,7 +161,7 @@ void DeferredRenderer::lightAccumulation(const std::vector<PointLight>& lights, 
     else drawTiled(lights, settings, false);
 }
 
-void DeferredRenderer::setGBufferUniforms(const Program& program) const {
+void DeferredRenderer::bindGBuffer(const Program& program) const {
     m_gBuffer.bindTextures(kGBufferUnit);
     program.set("uAlbedoSpecular", kGBufferUnit);
     program.set("uPackedNormal", kGBufferUnit + 1);
@@ -175,7 +175,7 @@ void DeferredRenderer::drawAmbient(const SceneLighting& lighting, const Deferred
     beginPass(pass);
     const Program& program = *m_programs.ambient;
     program.use();
-    setGBufferUniforms(program);
+    bindGBuffer(program);
     program.set("uShininess", settings.shininess);
     program.set("uMoonDirectionView", glm::mat3(m_view) * lighting.moon.direction);
     program.set("uSky", lighting.sky);
@@ -203,7 +203,7 @@ void DeferredRenderer::drawVolumes(const std::vector<PointLight>& lights, const 
     beginPass(pass);
     const Program& program = *m_programs.lightVolume;
     program.use();
-    setGBufferUniforms(program);
+    bindGBuffer(program);
     program.set("uCutoff", settings.cutoff);
     program.set("uShininess", settings.shininess);
     program.set("uCountOnly", countOnly);
@@ -255,7 +255,7 @@ void DeferredRenderer::drawTiled(const std::vector<PointLight>& lights, const De
     beginPass(passInto(m_lightBuffer, state));
     const Program& program = *m_programs.tiled;
     program.use();
-    setGBufferUniforms(program);
+    bindGBuffer(program);
     m_lightTexels.bind(kLightsUnit);
     m_tileOffsets.bind(kTileOffsetsUnit);
     m_tileLights.bind(kTileLightsUnit);
@@ -297,7 +297,7 @@ void DeferredRenderer::present(GLuint target, const DeferredSettings& settings) 
     beginPass(passInto(m_size, RenderState::overlay()));
     const Program& program = *m_programs.views;
     program.use();
-    setGBufferUniforms(program);
+    bindGBuffer(program);
     int mode = kPresent;
     switch (settings.view) {
     case DeferredView::Final: mode = kPresent; break;

@@ -103,6 +103,9 @@ struct DeferredSettings {
     /// Lab 09: the ambient occlusion, one value per pixel in .r, multiplying
     /// the ambient light. nullptr: none (1 everywhere).
     const Texture2D* ambientOcclusion = nullptr;
+    /// Skip the geometry pass: renderGeometry() has just filled the G-buffer
+    /// for the same items, camera and size (lab 09 reads it before lighting).
+    bool reuseGBuffer = false;
 };
 
 /// What the last render() did, for the window's title line and the benchmark.
@@ -126,6 +129,11 @@ public:
     /// its own target again). For lab 09, which reads the G-buffer next, and the benchmark.
     void renderGeometry(const DrawList& items, const Camera& camera, glm::ivec2 size);
 
+    /// Binds the G-buffer's textures and sets the uniforms of
+    /// shaders/deferred/gbuffer_read.glsl on `program`, which must be in use:
+    /// for a pass of the lab's own that reads the G-buffer (lab 09's occlusion).
+    void bindGBuffer(const Program& program) const;
+
     const GBuffer& gBuffer() const { return m_gBuffer; }
     const DeferredStats& stats() const { return m_stats; }
     /// The lists of the last tiled frame.
@@ -142,7 +150,6 @@ private:
     void drawVolumes(const std::vector<PointLight>& lights, const DeferredSettings& settings, bool countOnly);
     void drawTiled(const std::vector<PointLight>& lights, const DeferredSettings& settings, bool countOnly);
     void uploadLights(const std::vector<PointLight>& lights, const std::vector<float>& reaches);
-    void setGBufferUniforms(const Program& program) const;
     void present(GLuint target, const DeferredSettings& settings);
 
     DeferredPrograms m_programs;

@@ -1,0 +1,219 @@
+// Lab 09 app: the Acropolis by day, its ambient light darkened in corners and
+// creases by screen-space ambient occlusion. Lab 08's G-buffer (your
+// g_buffer.glsl) is drawn first; the occlusion pass (shaders/ssao/ssao.frag,
+// your ssao.glsl) estimates, per pixel, how much of the hemisphere above the
+// surface the scene hides, with your kernel and noise (kernel.cpp); the blur
+// pass smooths it; stoa::DeferredRenderer's ambient pass multiplies the
+// ambient light by it.
+//
+// Case keys besides the camera's (CameraRig.hpp):
+//   view = final | ambient | raw | blurred | without
+//            final: the lit picture; ambient: only a white ambient light (times
+//            the occlusion); raw / blurred: the occlusion itself, before and after
+//            the blur; without: the lit picture with no occlusion (default final)
+//   kernel = n          samples, 1..64 (default 32)
+//   radius = metres     the hemisphere's radius in view space, (0, 5] (default 1)
+//   bias = metres       depth bias of the comparison, [0, 0.5] (default 0.025)
+//   kernel_seed = n     (default 1)       noise_seed = n   (default 2)
+//   lights = n          wandering lights of lab 08, 0..1024 (default 0)
+// In the window: v switches the view, o the occlusion on and off, k the kernel size.
+
+#include <stoa/camera/CameraRig.hpp>
+#include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/Program.hpp>
+#include <stoa/gl/RenderPass.hpp>
+#include <stoa/gl/StateCache.hpp>
+#include <stoa/gl/Texture2D.hpp>
+#include <stoa/lab/CaseManifest.hpp>
+#include <stoa/lab/LabApp.hpp>
+#include <stoa/render/AmbientOcclusion.hpp>
+#include <stoa/render/DeferredRenderer.hpp>
+#include <stoa/render/TextureOverlay.hpp>
+#include <stoa/scene/AcropolisScene.hpp>
+#include <stoa/scene/PieceDrawList.hpp>
+#include <stoa/scene/WanderingLights.hpp>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+const std::vector<std::string> kViews{"final", "ambient", "raw", "blurred", "without"};
+enum class View { Final, Ambient, Raw, Blurred, Without };
+
+constexpr int kNoiseUnit = 10;
+constexpr int kRawUnit = 11;
+
+class AmbientOcclusionLab : public stoa::Lab {
+public:
+    void initialize(stoa::LabResources& resources) override {
+        stoa::DeferredPrograms programs;
+        programs.geometry = &resources.loadProgram("deferred/geometry.vert", "deferred/geometry.frag");
+        programs.forward = &resources.loadProgram("deferred/forward.vert", "deferred/forward.frag");
+        programs.ambient = &resources.loadProgram("basic/image.vert", "deferred/ambient.frag");
+        programs.lightVolume = &resources.loadProgram("deferred/light_volume.vert", "deferred/light_volume.frag");
+        programs.tiled = &resources.loadProgram("basic/image.vert", "deferred/tiled.frag");
+        programs.views = &resources.loadProgram("basic/image.vert", "deferred/views.frag");
+        m_occlusionProgram = &resources.loadProgram("basic/image.vert", "ssao/ssao.frag");
+        m_blurProgram = &resources.loadProgram("basic/image.vert", "ssao/blur.frag");
+        m_viewProgram = &resources.loadProgram("basic/image.vert", "ssao/ao_view.frag");
+        for (const stoa::Program* program : {m_occlusionProgram, m_blurProgram})
+            program->bindUniformBlock(stoa::FrameUniforms::kBlockName, stoa::FrameUniforms::kBinding);
+        m_renderer = std::make_unique<stoa::DeferredRenderer>(programs, stoa::DeferredLabCode::fromLab08());
+        m_overlay = std::make_unique<stoa::TextureOverlay>();
+        m_scene = std::make_unique<stoa::PieceDrawList>(stoa::acropolisPieces());
+        m_lighting.ambient = glm::vec3(0.62f, 0.64f, 0.68f);
+        m_lighting.moon = stoa::acropolisSun();
+        m_lighting.moon.color *= 0.45f;
+        m_lighting.sky = glm::vec3(0.55f, 0.68f, 0.85f);
+    }
+
+    void loadCase(const stoa::CaseSpec& spec) override {
+        m_cameras.loadCase(spec);
+        const std::string view = spec.getChoice("view", kViews, std::string("final"));
+        for (std::size_t i = 0; i < kViews.size(); ++i)
+            if (view == kViews[i]) m_view = static_cast<View>(i);
+        m_kernelSize = spec.getIntInRange("kernel", 1, stoa::kMaxKernelSize, 32);
+        m_radius = static_cast<float>(spec.getNumber("radius", 1.0));
+        if (!(m_radius > 0.0f && m_radius <= 5.0f)) spec.reject("radius", "radius must be in (0, 5] metres");
+        m_bias = static_cast<float>(spec.getNumber("bias", 0.025));
+        if (!(m_bias >= 0.0f && m_bias <= 0.5f)) spec.reject("bias", "bias must be in [0, 0.5] metres");
+        m_kernelSeed = static_cast<std::uint32_t>(spec.getIntInRange("kernel_seed", 0, 1000000, 1));
+        m_noiseSeed = static_cast<std::uint32_t>(spec.getIntInRange("noise_seed", 0, 1000000, 2));
+        m_lightOptions.count = spec.getIntInRange("lights", 0, 1024, 0);
+        m_kernel.clear();
+    }
+
+    void render(glm::ivec2 size) override {
+        const GLuint output = stoa::StateCache::current().drawFramebuffer();
+        if (m_kernel.empty()) prepareKernel();
+        const stoa::Camera& camera = m_cameras.active();
+        m_renderer->renderGeometry(m_scene->items(), camera, size);
+        const bool occlusion = m_view != View::Without;
+        if (occlusion) drawOcclusion(size);
+        stoa::StateCache::current().bindFramebuffer(output);
+        if (m_view == View::Raw || m_view == View::Blurred) {
+            (m_view == View::Raw ? *m_raw : *m_blurred).bindColorTexture(kRawUnit);
+            m_viewProgram->use();
+            m_viewProgram->set("uImage", kRawUnit);
+            m_overlay->draw(*m_viewProgram, {0, 0, size.x, size.y});
+            return;
+        }
+        stoa::SceneLighting lighting = m_lighting;
+        std::vector<stoa::PointLight> lights = stoa::wanderingLights(m_lightOptions, 0.0f);
+        if (m_view == View::Ambient) {   // albedo times the occlusion: white ambient light, nothing else
+            lighting.ambient = glm::vec3(1.0f);
+            lighting.moon.color = glm::vec3(0.0f);
+            lights.clear();
+        }
+        stoa::DeferredSettings settings;
+        settings.reuseGBuffer = true;
+        settings.ambientOcclusion = occlusion ? m_blurred->colorAttachment(0).get() : nullptr;
+        m_renderer->render(m_scene->items(), lights, lighting, camera, size, settings);
+    }
+
+    stoa::Camera& activeCamera() override { return m_cameras.active(); }
+    void toggleCamera() override { m_cameras.toggle(); }
+
+    bool keyPressed(unsigned char key) override {
+        if (key == 'v') {
+            m_view = static_cast<View>((static_cast<int>(m_view) + 1) % static_cast<int>(kViews.size()));
+            std::printf("view: %s\n", kViews[static_cast<std::size_t>(m_view)].c_str());
+            return true;
+        }
+        if (key == 'o') {
+            m_view = m_view == View::Without ? View::Final : View::Without;
+            std::printf("ambient occlusion %s\n", m_view == View::Without ? "off" : "on");
+            return true;
+        }
+        if (key == 'k') {
+            m_kernelSize = m_kernelSize >= stoa::kMaxKernelSize ? 8 : m_kernelSize * 2;
+            m_kernel.clear();
+            std::printf("kernel: %d samples\n", m_kernelSize);
+            return true;
+        }
+        return false;
+    }
+
+    std::vector<std::string> keyHelp() const override {
+        return {"v            switch view: final / ambient only / raw occlusion / blurred occlusion / without occlusion",
+                "o            occlusion on and off",
+                "k            kernel size: 8, 16, 32, 64 samples"};
+    }
+
+private:
+    // The student's kernel and noise, checked, uploaded once per case.
+    void prepareKernel() {
+        m_kernel = stoa::ssaoKernel(m_kernelSize, m_kernelSeed);
+        const std::vector<glm::vec3> noise = stoa::ssaoNoise(m_noiseSeed);
+        if (static_cast<int>(m_kernel.size()) != m_kernelSize)
+            throw std::runtime_error("ssaoKernel(" + std::to_string(m_kernelSize) + ", ...) returned " +
+                                     std::to_string(m_kernel.size()) + " samples");
+        if (noise.size() != 16)
+            throw std::runtime_error("ssaoNoise() returned " + std::to_string(noise.size()) + " vectors, not 16");
+        stoa::TextureOptions options;
+        options.mipmaps = false;
+        options.linear = false;
+        options.wrap = GL_REPEAT;
+        m_noise = std::make_unique<stoa::Texture2D>(stoa::Texture2D::empty(4, 4, GL_RGB32F, options));
+        m_noise->bind(kNoiseUnit);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, 4, GL_RGB, GL_FLOAT, noise.data());
+    }
+
+    void drawOcclusion(glm::ivec2 size) {
+        if (!m_raw || m_raw->width() != size.x || m_raw->height() != size.y) {
+            stoa::FramebufferOptions options;
+            options.colorFormats = {GL_R8};
+            options.depth = false;
+            m_raw = std::make_unique<stoa::Framebuffer>(size.x, size.y, options);
+            m_blurred = std::make_unique<stoa::Framebuffer>(size.x, size.y, options);
+        }
+        stoa::beginPass(stoa::passInto(*m_raw, stoa::RenderState::overlay()));
+        m_occlusionProgram->use();
+        m_renderer->bindGBuffer(*m_occlusionProgram);
+        m_noise->bind(kNoiseUnit);
+        m_occlusionProgram->set("uNoise", kNoiseUnit);
+        m_occlusionProgram->set("uKernelSize", m_kernelSize);
+        m_occlusionProgram->set("uRadius", m_radius);
+        m_occlusionProgram->set("uBias", m_bias);
+        const GLint kernel = m_occlusionProgram->uniformLocation("uKernel");
+        glUniform3fv(kernel, m_kernelSize, &m_kernel[0].x);
+        m_overlay->draw(*m_occlusionProgram, {0, 0, size.x, size.y});
+
+        stoa::beginPass(stoa::passInto(*m_blurred, stoa::RenderState::overlay()));
+        m_blurProgram->use();
+        m_raw->bindColorTexture(kRawUnit);
+        m_blurProgram->set("uRawOcclusion", kRawUnit);
+        m_overlay->draw(*m_blurProgram, {0, 0, size.x, size.y});
+    }
+
+    stoa::CameraRig m_cameras;
+    std::unique_ptr<stoa::DeferredRenderer> m_renderer;
+    std::unique_ptr<stoa::PieceDrawList> m_scene;
+    const stoa::Program* m_occlusionProgram = nullptr;
+    const stoa::Program* m_blurProgram = nullptr;
+    const stoa::Program* m_viewProgram = nullptr;
+    std::unique_ptr<stoa::Framebuffer> m_raw;
+    std::unique_ptr<stoa::Framebuffer> m_blurred;
+    std::unique_ptr<stoa::Texture2D> m_noise;
+    std::unique_ptr<stoa::TextureOverlay> m_overlay;   // made once the context exists
+    stoa::SceneLighting m_lighting;
+    stoa::WanderingLightsOptions m_lightOptions;
+    std::vector<glm::vec3> m_kernel;
+    View m_view = View::Final;
+    int m_kernelSize = 32;
+    float m_radius = 1.0f;
+    float m_bias = 0.025f;
+    std::uint32_t m_kernelSeed = 1;
+    std::uint32_t m_noiseSeed = 2;
+};
+
+} // namespace
+
+int main(int argc, char** argv) {
+    AmbientOcclusionLab lab;
+    return stoa::runLab(lab, STOA_LAB_BUILD_INFO, argc, argv);
+}
