@@ -5,8 +5,8 @@
 //                        radius lightReach() drawn with lightVolumeState()
 //   renderer = tiled     the G-buffer, then one full-screen pass over the lists of
 //                        buildTileLightLists()
-// The scene is the Acropolis with six more statues along its path (about 290,000
-// triangles), so that the geometry is at the scale deferred shading is made for.
+// The scene is the Acropolis with an avenue of six more statues (acropolisAvenuePieces(),
+// about 304,000 triangles), so that the geometry is at the scale deferred shading is made for.
 //
 // Case keys besides the camera's (CameraRig.hpp):
 //   renderer = forward | volumes | tiled     (default volumes)
@@ -20,7 +20,7 @@
 //   extra_light = x y z  r g b    one more light at a fixed place (world metres, linear colour)
 //   cutoff = c                    the brightness at which a light counts as gone, (0, 0.5] (default 1/64)
 //   heat_scale = n                the count the heat maps show as white, 1..1024 (default 64)
-// In the window: r switches renderer, v the view, space stops and starts the lights.
+// In the window: r switches renderer, v the view, p stops and starts the lights.
 
 #include <stoa/camera/CameraRig.hpp>
 #include <stoa/gl/Program.hpp>
@@ -32,8 +32,6 @@
 #include <stoa/scene/PieceDrawList.hpp>
 #include <stoa/scene/WanderingLights.hpp>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -44,39 +42,6 @@ namespace {
 
 const std::vector<std::string> kRenderers{"forward", "volumes", "tiled"};
 const std::vector<std::string> kViews{"final", "albedo", "normals", "positions", "specular", "overdraw", "tiles"};
-
-// The scene's pieces: acropolisPieces() and six more statues on pedestals,
-// three each side of the path from the front of the floor to the columns.
-std::vector<stoa::AcropolisPiece> nightAcropolis() {
-    std::vector<stoa::AcropolisPiece> pieces = stoa::acropolisPieces();
-    const stoa::AcropolisPiece* pedestal = nullptr;
-    for (const stoa::AcropolisPiece& piece : pieces) {
-        if (piece.name == "pedestal") pedestal = &piece;
-    }
-    std::vector<stoa::AcropolisPiece> extra;
-    for (int i = 0; i < 6; ++i) {
-        const float side = i % 2 == 0 ? -1.0f : 1.0f;
-        const glm::vec3 place(side * 3.2f, 0.0f, 2.0f + 3.5f * static_cast<float>(i / 2));
-        const float turn = side > 0.0f ? -90.0f : 90.0f;   // facing the path
-        const glm::mat4 base = glm::rotate(glm::translate(glm::mat4(1.0f), place), glm::radians(turn), glm::vec3(0, 1, 0));
-        const std::string name = "statue " + std::to_string(i + 2);
-        if (pedestal) {
-            stoa::AcropolisPiece block = *pedestal;
-            block.name = name;
-            block.model = glm::scale(glm::translate(base, glm::vec3(0.0f, 0.4f, 0.0f)), glm::vec3(0.9f, 0.8f, 0.9f));
-            extra.push_back(block);
-        }
-        for (const stoa::AcropolisPiece& piece : pieces)
-            if (piece.name == "statue") {
-                stoa::AcropolisPiece copy = piece;
-                copy.name = name;
-                copy.model = glm::translate(base, glm::vec3(0.0f, 0.8f, 0.0f));
-                extra.push_back(copy);
-            }
-    }
-    pieces.insert(pieces.end(), extra.begin(), extra.end());
-    return pieces;
-}
 
 class DeferredLab : public stoa::Lab {
 public:
@@ -90,7 +55,7 @@ public:
         programs.views = &resources.loadProgram("basic/image.vert", "deferred/views.frag");
         m_renderer = std::make_unique<stoa::DeferredRenderer>(programs, stoa::DeferredLabCode::fromLab08());
 
-        m_scene = std::make_unique<stoa::PieceDrawList>(nightAcropolis());
+        m_scene = std::make_unique<stoa::PieceDrawList>(stoa::acropolisAvenuePieces());
         std::printf("scene: %zu triangles in %zu draws\n", m_scene->triangleCount(), m_scene->items().size());
     }
 
@@ -146,7 +111,7 @@ public:
             std::printf("view: %s\n", stoa::toString(m_settings.view));
             return true;
         }
-        if (key == ' ') {
+        if (key == 'p') {
             m_moving = !m_moving;
             std::printf("lights %s\n", m_moving ? "moving" : "stopped");
             return true;
@@ -161,7 +126,7 @@ public:
     std::vector<std::string> keyHelp() const override {
         return {"r            switch renderer: forward (all lights per fragment) / light volumes / tiles",
                 "v            switch view: final / albedo / normals / positions / specular / overdraw / tiles",
-                "space        start and stop the lights"};
+                "p            start and stop the lights"};
     }
 
 private:

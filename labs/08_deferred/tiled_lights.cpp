@@ -29,14 +29,17 @@ TileRange lightTileRange(const LightSphere& light, const glm::mat4& projection, 
 }
 
 TileLightLists buildTileLightLists(const std::vector<LightSphere>& lights, const glm::mat4& projection, float near,
-                                   const TileGrid& grid) {
-    // TODO(lab08): count each tile's lights, turn the counts into offsets
-    // (a running sum), then fill the lists, lights in increasing order
-    // (docs: "Tiled shading", TileLightLists in stoa/render/DeferredShading.hpp).
+                                   const TileGrid& grid, const std::vector<DepthRange>& tileDepths) {
+    // TODO(lab08): for each light, the tiles of lightTileRange() whose depths
+    // (tileDepths) its sphere reaches into; count each tile's lights, turn the
+    // counts into offsets (a running sum), then fill the lists, lights in
+    // increasing order (docs: "Tiled shading", "Depth bounds", TileLightLists in
+    // stoa/render/DeferredShading.hpp).
     (void)lights;
     (void)projection;
     (void)near;
     (void)grid;
+    (void)tileDepths;
     throw NotImplemented("buildTileLightLists()");
 }
 

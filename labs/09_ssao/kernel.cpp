@@ -16,7 +16,8 @@ std::vector<glm::vec3> ssaoKernel(int size, std::uint32_t seed) {
     // TODO(lab09): for each of the `size` samples, four numbers from
     // KernelRandom random(seed), in this order: x and y in [-1, 1), z in [0, 1);
     // normalise; times the fourth number; times 0.1 + 0.9 (i / size)^2
-    // (docs: "The sample kernel").
+    // (docs: "The sample kernel"). Draw each number in a statement of its own:
+    // C++ may evaluate a constructor's arguments in any order.
     (void)size;
     (void)seed;
     throw NotImplemented("ssaoKernel()");

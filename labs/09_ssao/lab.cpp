@@ -33,8 +33,10 @@
 #include <stoa/scene/PieceDrawList.hpp>
 #include <stoa/scene/WanderingLights.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -129,7 +131,7 @@ public:
             return true;
         }
         if (key == 'k') {
-            m_kernelSize = m_kernelSize >= stoa::kMaxKernelSize ? 8 : m_kernelSize * 2;
+            m_kernelSize = m_kernelSize >= stoa::kMaxKernelSize ? 8 : std::min(m_kernelSize * 2, stoa::kMaxKernelSize);
             m_kernel.clear();
             std::printf("kernel: %d samples\n", m_kernelSize);
             return true;

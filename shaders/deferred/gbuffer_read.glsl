@@ -17,15 +17,29 @@ struct Surface {
     bool sky;        // nothing drawn here (depth 1)
 };
 
-Surface readSurface(ivec2 pixel) {
+// The view-space position alone (a pass may reject a pixel by its position
+// before reading the rest); `sky` is true where nothing was drawn.
+vec3 readPosition(ivec2 pixel, out bool sky) {
+    float depth = texelFetch(uDepth, pixel, 0).r;
+    sky = depth >= 1.0;
+    vec2 uv = (vec2(pixel) + 0.5) / uViewport;
+    return viewPositionFromDepth(uv, depth, uInverseProjection);
+}
+
+// The rest of the pixel's surface, after readPosition().
+Surface completeSurface(ivec2 pixel, vec3 position, bool sky) {
     Surface surface;
     vec4 albedoSpecular = texelFetch(uAlbedoSpecular, pixel, 0);
-    float depth = texelFetch(uDepth, pixel, 0).r;
     surface.albedo = albedoSpecular.rgb;
     surface.specular = albedoSpecular.a;
     surface.normal = unpackNormal(texelFetch(uPackedNormal, pixel, 0).rg);
-    surface.sky = depth >= 1.0;
-    vec2 uv = (vec2(pixel) + 0.5) / uViewport;
-    surface.position = viewPositionFromDepth(uv, depth, uInverseProjection);
+    surface.position = position;
+    surface.sky = sky;
     return surface;
+}
+
+Surface readSurface(ivec2 pixel) {
+    bool sky;
+    vec3 position = readPosition(pixel, sky);
+    return completeSurface(pixel, position, sky);
 }

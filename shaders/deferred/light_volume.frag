@@ -11,6 +11,7 @@
 uniform vec3 uLightPosition;     // view space
 uniform vec3 uLightColor;
 uniform vec3 uLightAttenuation;
+uniform float uLightReach;       // lightReach(): the light is 0 beyond it
 uniform float uCutoff;
 uniform float uShininess;
 uniform bool uCountOnly;
@@ -22,8 +23,14 @@ void main() {
         fragColor = vec4(1.0);
         return;
     }
-    Surface surface = readSurface(ivec2(gl_FragCoord.xy));
-    if (surface.sky) discard;
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    bool sky;
+    vec3 position = readPosition(pixel, sky);
+    // The sphere covers pixels whose surface lies far in front of it or behind
+    // it too: those are left before the rest of the G-buffer is read.
+    vec3 toLight = uLightPosition - position;
+    if (sky || dot(toLight, toLight) > uLightReach * uLightReach) discard;
+    Surface surface = completeSurface(pixel, position, sky);
     fragColor = vec4(pointLightShade(surface.position, surface.normal, surface.albedo, surface.specular, uShininess,
                                      uLightPosition, uLightColor, uLightAttenuation, uCutoff), 1.0);
 }

@@ -3,10 +3,12 @@
 #include "08_deferred/g_buffer.glsl"
 #include "deferred/gbuffer_read.glsl"
 #include "deferred/lighting.glsl"
-// Lab 08's tiled pass, one full-screen pass for all the point lights: each
-// pixel loops over the lights of its tile only, from the lists the student's
-// buildTileLightLists() made on the CPU. With uCountOnly it writes the length
-// of its tile's list instead (the tile heat map).
+#include "deferred/ambient_light.glsl"
+// Lab 08's tiled pass, one full-screen pass for all the light: the ambient
+// light and the moon, then the point lights, each pixel looping over the
+// lights of its tile only, from the lists the student's buildTileLightLists()
+// made on the CPU. With uCountOnly it writes the length of its tile's list
+// instead (the tile heat map).
 
 uniform samplerBuffer uLights;       // three texels per light (lighting.glsl)
 uniform isamplerBuffer uTileOffsets; // tile t's lights: uTileLights[offsets[t] .. offsets[t + 1] - 1]
@@ -30,11 +32,19 @@ void main() {
         return;
     }
     Surface surface = readSurface(pixel);
-    if (surface.sky) discard;
-    vec3 color = vec3(0.0);
+    vec3 color = ambientLight(surface, pixel, uShininess);
+    if (surface.sky) {
+        fragColor = vec4(color, 1.0);
+        return;
+    }
     for (int k = first; k < end; ++k) {
+        int light = texelFetch(uTileLights, k).r;
+        // The tile's list is conservative: skip a light whose reach (w) ends before this pixel.
+        vec4 positionReach = texelFetch(uLights, 3 * light);
+        vec3 toLight = positionReach.xyz - surface.position;
+        if (dot(toLight, toLight) > positionReach.w * positionReach.w) continue;
         vec3 position, lightColor, attenuation;
-        fetchLight(uLights, texelFetch(uTileLights, k).r, position, lightColor, attenuation);
+        fetchLight(uLights, light, position, lightColor, attenuation);
         color += pointLightShade(surface.position, surface.normal, surface.albedo, surface.specular, uShininess, position,
                                  lightColor, attenuation, uCutoff);
     }

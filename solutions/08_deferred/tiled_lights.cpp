@@ -43,8 +43,14 @@ TileRange lightTileRange(const LightSphere& light, const glm::mat4& projection, 
     return range;
 }
 
+// True when the light's sphere reaches into the depths the tile sees.
+bool reachesDepths(const LightSphere& light, const DepthRange& depths) {
+    const float distance = -light.centerView.z;
+    return !depths.empty() && distance - light.reach <= depths.farthest && distance + light.reach >= depths.nearest;
+}
+
 TileLightLists buildTileLightLists(const std::vector<LightSphere>& lights, const glm::mat4& projection, float near,
-                                   const TileGrid& grid) {
+                                   const TileGrid& grid, const std::vector<DepthRange>& tileDepths) {
     TileLightLists lists;
     lists.grid = grid;
     const int tileCount = grid.tileCount();
@@ -56,7 +62,10 @@ TileLightLists buildTileLightLists(const std::vector<LightSphere>& lights, const
         ranges.push_back(range);
         if (range.empty()) continue;
         for (int y = range.first.y; y <= range.last.y; ++y)
-            for (int x = range.first.x; x <= range.last.x; ++x) ++counts[static_cast<std::size_t>(grid.index({x, y}))];
+            for (int x = range.first.x; x <= range.last.x; ++x) {
+                const int tile = grid.index({x, y});
+                if (reachesDepths(light, tileDepths[static_cast<std::size_t>(tile)])) ++counts[static_cast<std::size_t>(tile)];
+            }
     }
     lists.offsets.assign(static_cast<std::size_t>(tileCount) + 1, 0);
     for (int t = 0; t < tileCount; ++t) lists.offsets[t + 1] = lists.offsets[t] + counts[t];
@@ -66,8 +75,11 @@ TileLightLists buildTileLightLists(const std::vector<LightSphere>& lights, const
         const TileRange& range = ranges[i];
         if (range.empty()) continue;
         for (int y = range.first.y; y <= range.last.y; ++y)
-            for (int x = range.first.x; x <= range.last.x; ++x)
-                lists.lights[static_cast<std::size_t>(next[grid.index({x, y})]++)] = static_cast<int>(i);
+            for (int x = range.first.x; x <= range.last.x; ++x) {
+                const int tile = grid.index({x, y});
+                if (reachesDepths(lights[i], tileDepths[static_cast<std::size_t>(tile)]))
+                    lists.lights[static_cast<std::size_t>(next[static_cast<std::size_t>(tile)]++)] = static_cast<int>(i);
+            }
     }
     return lists;
 }

@@ -17,9 +17,12 @@ std::vector<glm::vec3> ssaoKernel(int size, std::uint32_t seed) {
     std::vector<glm::vec3> kernel;
     kernel.reserve(static_cast<std::size_t>(size));
     for (int i = 0; i < size; ++i) {
-        // A direction in the hemisphere z >= 0 (x, y, z drawn in that order) ...
-        glm::vec3 sample(random.next() * 2.0f - 1.0f, random.next() * 2.0f - 1.0f, random.next());
-        sample = glm::normalize(sample);
+        // A direction in the hemisphere z >= 0, drawn x, y, z in that order (in
+        // statements of their own: a constructor's arguments may be evaluated in any order) ...
+        const float x = random.next() * 2.0f - 1.0f;
+        const float y = random.next() * 2.0f - 1.0f;
+        const float z = random.next();
+        glm::vec3 sample = glm::normalize(glm::vec3(x, y, z));
         // ... a random length (the fourth number) ...
         sample *= random.next();
         // ... and more of them near the point: 0.1 + 0.9 (i / size)^2.

@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace stoa {
@@ -126,39 +127,42 @@ void DeferredRenderer::render(const DrawList& items, const std::vector<PointLigh
     }
     updateFrame(camera, size, lighting);
 
+    if (settings.view == DeferredView::Final && settings.mode == LightingMode::Tiled) {
+        // One pass, straight into the output: ambient light and every tile's lights.
+        StateCache::current().bindFramebuffer(output);
+        drawTiled(lights, lighting, settings, false);
+        return;
+    }
     if (settings.view == DeferredView::Final && settings.mode == LightingMode::Forward) {
         drawForward(items, lights, lighting, settings);
     } else if (settings.view == DeferredView::Final) {
-        lightAccumulation(lights, lighting, camera, settings);
-    } else if (settings.view == DeferredView::Overdraw || settings.view == DeferredView::TileCounts) {
+        // The light buffer gets the G-buffer's depth and stencil (a copy: a pass
+        // may not sample a texture it also depth-tests against); the ambient
+        // pass fills it, the volumes add to it.
+        copyDepthToLightBuffer();
+        drawAmbient(lighting, settings);
+        drawVolumes(lights, settings, false);
+    } else if (settings.view == DeferredView::Overdraw) {
         // Counts, added up in the light buffer's red channel.
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, m_gBuffer.target().id());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_lightBuffer.id());
-        glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
-        StateCache::current().forget();
+        copyDepthToLightBuffer();
         PassDescription pass = passInto(m_lightBuffer);
         pass.clear.color = true;
         pass.clear.colorValue = glm::vec4(0.0f);
         beginPass(pass);
-        if (settings.view == DeferredView::Overdraw) drawVolumes(lights, settings, true);
-        else drawTiled(lights, settings, true);
+        drawVolumes(lights, settings, true);
+    } else if (settings.view == DeferredView::TileCounts) {
+        StateCache::current().bindFramebuffer(m_lightBuffer.id());
+        drawTiled(lights, lighting, settings, true);
     }
     present(output, settings);
 }
 
-void DeferredRenderer::lightAccumulation(const std::vector<PointLight>& lights, const SceneLighting& lighting,
-                                         const Camera& camera, const DeferredSettings& settings) {
-    (void)camera;
-    // The light buffer gets the G-buffer's depth and stencil (a copy: a pass may
-    // not sample a texture it also depth-tests against).
+void DeferredRenderer::copyDepthToLightBuffer() {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, m_gBuffer.target().id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_lightBuffer.id());
     glBlitFramebuffer(0, 0, m_size.x, m_size.y, 0, 0, m_size.x, m_size.y, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT,
                       GL_NEAREST);
     StateCache::current().forget();
-    drawAmbient(lighting, settings);
-    if (settings.mode == LightingMode::Volumes) drawVolumes(lights, settings, false);
-    else drawTiled(lights, settings, false);
 }
 
 void DeferredRenderer::bindGBuffer(const Program& program) const {
@@ -170,18 +174,22 @@ void DeferredRenderer::bindGBuffer(const Program& program) const {
     program.set("uViewport", glm::vec2(m_size));
 }
 
-void DeferredRenderer::drawAmbient(const SceneLighting& lighting, const DeferredSettings& settings) {
-    PassDescription pass = passInto(m_lightBuffer, RenderState::overlay());
-    beginPass(pass);
-    const Program& program = *m_programs.ambient;
-    program.use();
-    bindGBuffer(program);
+void DeferredRenderer::setAmbientUniforms(const Program& program, const SceneLighting& lighting,
+                                          const DeferredSettings& settings) const {
     program.set("uShininess", settings.shininess);
     program.set("uMoonDirectionView", glm::mat3(m_view) * lighting.moon.direction);
     program.set("uSky", lighting.sky);
     program.set("uAmbientOcclusion", kAmbientOcclusionUnit);
     program.set("uHasAmbientOcclusion", settings.ambientOcclusion != nullptr);
     if (settings.ambientOcclusion) settings.ambientOcclusion->bind(kAmbientOcclusionUnit);
+}
+
+void DeferredRenderer::drawAmbient(const SceneLighting& lighting, const DeferredSettings& settings) {
+    beginPass(passInto(m_lightBuffer, RenderState::overlay()));
+    const Program& program = *m_programs.ambient;
+    program.use();
+    bindGBuffer(program);
+    setAmbientUniforms(program, lighting, settings);
     m_overlay.draw(program, {0, 0, m_size.x, m_size.y});
 }
 
@@ -198,6 +206,7 @@ void DeferredRenderer::uploadLights(const std::vector<PointLight>& lights, const
 }
 
 void DeferredRenderer::drawVolumes(const std::vector<PointLight>& lights, const DeferredSettings& settings, bool countOnly) {
+    if (lights.empty()) return;   // nothing to add
     const RenderState state = m_code.lightVolumeState();   // the student's
     PassDescription pass = passInto(m_lightBuffer, state);
     beginPass(pass);
@@ -212,6 +221,7 @@ void DeferredRenderer::drawVolumes(const std::vector<PointLight>& lights, const 
     const GLint position = program.uniformLocation("uLightPosition");
     const GLint color = program.uniformLocation("uLightColor");
     const GLint attenuation = program.uniformLocation("uLightAttenuation");
+    const GLint reachLocation = program.uniformLocation("uLightReach");
     for (const PointLight& light : lights) {
         const float reach = m_code.lightReach(light, settings.cutoff);   // the student's
         if (!(reach > 0.0f)) continue;
@@ -222,12 +232,40 @@ void DeferredRenderer::drawVolumes(const std::vector<PointLight>& lights, const 
         program.setAt(position, centre);
         program.setAt(color, light.color);
         program.setAt(attenuation, light.attenuation);
+        program.setAt(reachLocation, reach);
         m_sphere.draw();
         ++m_stats.lightsDrawn;
     }
 }
 
-void DeferredRenderer::drawTiled(const std::vector<PointLight>& lights, const DeferredSettings& settings, bool countOnly) {
+std::vector<DepthRange> DeferredRenderer::tileDepthRanges(const TileGrid& grid) const {
+    // The G-buffer's depth, rows from the bottom as the tiles count them.
+    std::vector<float> depth(static_cast<std::size_t>(m_size.x) * static_cast<std::size_t>(m_size.y));
+    m_gBuffer.target().readPixels(-1, 0, 0, m_size.x, m_size.y, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    // Window depth -> distance in front of the camera: with n = 2 depth - 1,
+    // z_view = -P[3][2] / (n + P[2][2]).
+    const float a = m_projection[2][2], b = m_projection[3][2];
+    std::vector<DepthRange> ranges(static_cast<std::size_t>(grid.tileCount()));
+    for (int y = 0; y < m_size.y; ++y) {
+        const std::size_t row = static_cast<std::size_t>(y) * static_cast<std::size_t>(m_size.x);
+        for (int x = 0; x < m_size.x; ++x) {
+            const float d = depth[row + static_cast<std::size_t>(x)];
+            if (d >= 1.0f) continue;   // sky
+            const float distance = b / (2.0f * d - 1.0f + a);
+            DepthRange& range = ranges[static_cast<std::size_t>(grid.index({x / grid.tileSize, y / grid.tileSize}))];
+            if (range.empty()) {
+                range.nearest = range.farthest = distance;
+            } else {
+                range.nearest = std::min(range.nearest, distance);
+                range.farthest = std::max(range.farthest, distance);
+            }
+        }
+    }
+    return ranges;
+}
+
+void DeferredRenderer::drawTiled(const std::vector<PointLight>& lights, const SceneLighting& lighting,
+                                 const DeferredSettings& settings, bool countOnly) {
     std::vector<float> reaches;
     std::vector<LightSphere> spheres;
     reaches.reserve(lights.size());
@@ -240,7 +278,7 @@ void DeferredRenderer::drawTiled(const std::vector<PointLight>& lights, const De
     TileGrid grid;
     grid.viewport = m_size;
     grid.tileSize = settings.tileSize;
-    m_tiles = m_code.buildTileLightLists(spheres, m_projection, m_near, grid);   // the student's
+    m_tiles = m_code.buildTileLightLists(spheres, m_projection, m_near, grid, tileDepthRanges(grid));   // the student's
     STOA_ASSERT(m_tiles.offsets.size() == static_cast<std::size_t>(grid.tileCount()) + 1,
                 "buildTileLightLists() must return tileCount() + 1 offsets");
     STOA_ASSERT(static_cast<std::size_t>(m_tiles.offsets.back()) == m_tiles.lights.size(),
@@ -250,12 +288,12 @@ void DeferredRenderer::drawTiled(const std::vector<PointLight>& lights, const De
     m_tileOffsets.upload(m_tiles.offsets);
     m_tileLights.upload(m_tiles.lights);
 
-    RenderState state = RenderState::overlay();
-    state.blend = BlendMode::Additive;
-    beginPass(passInto(m_lightBuffer, state));
+    // Into the framebuffer bound now, over all of it, replacing what is there.
+    beginPass(passInto(m_size, RenderState::overlay()));
     const Program& program = *m_programs.tiled;
     program.use();
     bindGBuffer(program);
+    setAmbientUniforms(program, lighting, settings);
     m_lightTexels.bind(kLightsUnit);
     m_tileOffsets.bind(kTileOffsetsUnit);
     m_tileLights.bind(kTileLightsUnit);
@@ -265,9 +303,8 @@ void DeferredRenderer::drawTiled(const std::vector<PointLight>& lights, const De
     program.set("uTileSize", settings.tileSize);
     program.set("uTileColumns", grid.tiles().x);
     program.set("uCutoff", settings.cutoff);
-    program.set("uShininess", settings.shininess);
     program.set("uCountOnly", countOnly);
-    m_overlay.draw(program, {0, 0, m_size.x, m_size.y}, state);
+    m_overlay.draw(program, {0, 0, m_size.x, m_size.y});
 }
 
 void DeferredRenderer::drawForward(const DrawList& items, const std::vector<PointLight>& lights,

@@ -171,6 +171,24 @@ std::vector<AcropolisPiece> acropolisPieces(const AcropolisOptions& options) {
     return pieces;
 }
 
+std::vector<AcropolisPiece> acropolisAvenuePieces() {
+    std::vector<AcropolisPiece> pieces = acropolisPieces();
+    const std::size_t original = pieces.size();
+    for (int i = 0; i < 6; ++i) {
+        const float side = i % 2 == 0 ? -1.0f : 1.0f;
+        const glm::vec3 place(side * 3.2f, 0.0f, 2.0f + 3.5f * static_cast<float>(i / 2));
+        const float turn = side > 0.0f ? -90.0f : 90.0f;   // facing the path
+        const glm::mat4 base = glm::rotate(glm::translate(glm::mat4(1.0f), place), glm::radians(turn), glm::vec3(0, 1, 0));
+        const std::string name = "statue " + std::to_string(i + 2);
+        pieces.push_back({name, &pedestalMesh(), pedestalMaterial(),
+                          glm::scale(glm::translate(base, glm::vec3(0.0f, 0.4f, 0.0f)), glm::vec3(0.9f, 0.8f, 0.9f))});
+        for (std::size_t k = 0; k < original; ++k)
+            if (pieces[k].name == "statue")
+                pieces.push_back({name, pieces[k].mesh, pieces[k].material, glm::translate(base, glm::vec3(0.0f, 0.8f, 0.0f))});
+    }
+    return pieces;
+}
+
 std::pair<glm::vec3, glm::vec3> acropolisBounds(const AcropolisOptions& options) {
     glm::vec3 lower(std::numeric_limits<float>::max()), upper(std::numeric_limits<float>::lowest());
     for (const AcropolisPiece& piece : acropolisPieces(options)) {

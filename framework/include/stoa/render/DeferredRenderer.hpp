@@ -6,11 +6,13 @@
 //   volumes   geometry pass into the G-buffer; ambient pass; one sphere per
 //             light, each fragment of which lights the pixel under it
 //   tiled     geometry pass; ambient pass; the lights sorted into screen tiles
-//             on the CPU; one full-screen pass, each pixel looping over its tile's lights
+//             on the CPU, each tile bounded by the depths its pixels see (read
+//             back from the G-buffer); one full-screen pass, each pixel looping
+//             over its tile's lights
 //
-// All three light with shaders/deferred/lighting.glsl into a 16-bit float
-// light buffer, then copy it, clamped, into the framebuffer bound when
-// render() is called. Lab 08's app and benchmark and lab 09's app draw through it.
+// All three light with shaders/deferred/lighting.glsl: forward and the volumes
+// into a 16-bit float light buffer, then copied, clamped, into the framebuffer
+// bound when render() is called; the tiled pass straight into that framebuffer. Lab 08's app and benchmark and lab 09's app draw through it.
 //
 // The student's functions (DeferredShading.hpp) reach it at run time, as
 // DeferredLabCode, from the program that links them; the student's GLSL
@@ -76,7 +78,8 @@ struct DeferredPrograms {
 struct DeferredLabCode {
     std::function<float(const PointLight&, float)> lightReach;
     std::function<RenderState()> lightVolumeState;
-    std::function<TileLightLists(const std::vector<LightSphere>&, const glm::mat4&, float, const TileGrid&)>
+    std::function<TileLightLists(const std::vector<LightSphere>&, const glm::mat4&, float, const TileGrid&,
+                                 const std::vector<DepthRange>&)>
         buildTileLightLists;
 
     /// The three as the calling program links them. Inline, so that only a
@@ -142,13 +145,15 @@ public:
 private:
     void updateFrame(const Camera& camera, glm::ivec2 size, const SceneLighting& lighting);
     void prepareTargets(glm::ivec2 size);
-    void lightAccumulation(const std::vector<PointLight>& lights, const SceneLighting& lighting, const Camera& camera,
-                           const DeferredSettings& settings);
+    void copyDepthToLightBuffer();
+    void setAmbientUniforms(const Program& program, const SceneLighting& lighting, const DeferredSettings& settings) const;
     void drawForward(const DrawList& items, const std::vector<PointLight>& lights, const SceneLighting& lighting,
                      const DeferredSettings& settings);
     void drawAmbient(const SceneLighting& lighting, const DeferredSettings& settings);
     void drawVolumes(const std::vector<PointLight>& lights, const DeferredSettings& settings, bool countOnly);
-    void drawTiled(const std::vector<PointLight>& lights, const DeferredSettings& settings, bool countOnly);
+    void drawTiled(const std::vector<PointLight>& lights, const SceneLighting& lighting, const DeferredSettings& settings,
+                   bool countOnly);
+    std::vector<DepthRange> tileDepthRanges(const TileGrid& grid) const;
     void uploadLights(const std::vector<PointLight>& lights, const std::vector<float>& reaches);
     void present(GLuint target, const DeferredSettings& settings);
 

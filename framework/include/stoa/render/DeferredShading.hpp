@@ -46,6 +46,16 @@ struct LightSphere {
     float reach = 0.0f;
 };
 
+/// The depths a tile's pixels see, as distances in front of the camera
+/// (metres along -z in view space): the nearest and the farthest surface the
+/// G-buffer holds in the tile. Empty (nearest > farthest) where the tile shows
+/// only sky.
+struct DepthRange {
+    float nearest = 1.0f;
+    float farthest = 0.0f;
+    bool empty() const { return nearest > farthest; }
+};
+
 /// For every tile, the lights that can reach it: tile t's lights are
 /// lights[offsets[t]] .. lights[offsets[t + 1] - 1], indices into the list
 /// buildTileLightLists() was given, in increasing order.
@@ -69,12 +79,17 @@ RenderState lightVolumeState();
 
 /// The tiles of `grid` that a light's sphere can cover, seen through
 /// `projection` (view -> clip, near plane at distance `near`): conservative (a
-/// tile it covers is never left out) and empty when the sphere lies wholly
-/// behind the near plane or outside the picture. (tiled_lights.cpp)
+/// tile it covers is never left out), every tile when the sphere crosses the
+/// near plane, and empty when it lies wholly nearer than the near plane (or
+/// behind the eye) or outside the picture. (tiled_lights.cpp)
 TileRange lightTileRange(const LightSphere& light, const glm::mat4& projection, float near, const TileGrid& grid);
 
-/// Every tile's list of the lights whose lightTileRange() holds it. (tiled_lights.cpp)
+/// Every tile's list of the lights whose lightTileRange() holds it and whose
+/// sphere reaches into the tile's depth range: tileDepths[t] is tile t's
+/// (grid.index() order), and a light whose distances from -centerView.z - reach
+/// to -centerView.z + reach miss it cannot light any of the tile's pixels.
+/// (tiled_lights.cpp)
 TileLightLists buildTileLightLists(const std::vector<LightSphere>& lights, const glm::mat4& projection, float near,
-                                   const TileGrid& grid);
+                                   const TileGrid& grid, const std::vector<DepthRange>& tileDepths);
 
 } // namespace stoa

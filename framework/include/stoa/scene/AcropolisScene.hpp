@@ -73,6 +73,13 @@ struct AcropolisPiece {
 /// options.meshFilter.
 std::vector<AcropolisPiece> acropolisPieces(const AcropolisOptions& options = {});
 
+/// acropolisPieces() with an avenue of six more statues on lower pedestals,
+/// three each side of the path from the front of the floor towards the columns
+/// (x = -3.2 and 3.2, z = 2 to 9), turned to face it, named "statue 2" ..
+/// "statue 7": about 304,000 triangles, the scale of labs 08-09's deferred
+/// renderer. Needs no GL context.
+std::vector<AcropolisPiece> acropolisAvenuePieces();
+
 /// The late-afternoon sun the scene is lit with by default: low from the front
 /// right, so the columns throw long shadows back towards the temple steps.
 DirectionalLight acropolisSun();
