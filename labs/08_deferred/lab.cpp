@@ -46,13 +46,10 @@ const std::vector<std::string> kViews{"final", "albedo", "normals", "positions",
 class DeferredLab : public stoa::Lab {
 public:
     void initialize(stoa::LabResources& resources) override {
-        stoa::DeferredPrograms programs;
-        programs.geometry = &resources.loadProgram("deferred/geometry.vert", "deferred/geometry.frag");
-        programs.forward = &resources.loadProgram("deferred/forward.vert", "deferred/forward.frag");
-        programs.ambient = &resources.loadProgram("basic/image.vert", "deferred/ambient.frag");
-        programs.lightVolume = &resources.loadProgram("deferred/light_volume.vert", "deferred/light_volume.frag");
-        programs.tiled = &resources.loadProgram("basic/image.vert", "deferred/tiled.frag");
-        programs.views = &resources.loadProgram("basic/image.vert", "deferred/views.frag");
+        const auto load = [&](const std::string& vertex, const std::string& fragment) -> const stoa::Program& {
+            return resources.loadProgram(vertex, fragment);
+        };
+        const stoa::DeferredPrograms programs = stoa::DeferredPrograms::load(load);
         m_renderer = std::make_unique<stoa::DeferredRenderer>(programs, stoa::DeferredLabCode::fromLab08());
 
         m_scene = std::make_unique<stoa::PieceDrawList>(stoa::acropolisAvenuePieces());

@@ -19,14 +19,13 @@
 // In the window: v switches the view, o the occlusion on and off, k the kernel size.
 
 #include <stoa/camera/CameraRig.hpp>
-#include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/Program.hpp>
-#include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/Texture2D.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/AmbientOcclusion.hpp>
+#include <stoa/render/AmbientOcclusionPass.hpp>
 #include <stoa/render/DeferredRenderer.hpp>
 #include <stoa/render/TextureOverlay.hpp>
 #include <stoa/scene/AcropolisScene.hpp>
@@ -36,7 +35,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -45,24 +43,18 @@ namespace {
 const std::vector<std::string> kViews{"final", "ambient", "raw", "blurred", "without"};
 enum class View { Final, Ambient, Raw, Blurred, Without };
 
-constexpr int kNoiseUnit = 10;
-constexpr int kRawUnit = 11;
+constexpr int kViewUnit = 11;   // the occlusion views' texture
 
 class AmbientOcclusionLab : public stoa::Lab {
 public:
     void initialize(stoa::LabResources& resources) override {
-        stoa::DeferredPrograms programs;
-        programs.geometry = &resources.loadProgram("deferred/geometry.vert", "deferred/geometry.frag");
-        programs.forward = &resources.loadProgram("deferred/forward.vert", "deferred/forward.frag");
-        programs.ambient = &resources.loadProgram("basic/image.vert", "deferred/ambient.frag");
-        programs.lightVolume = &resources.loadProgram("deferred/light_volume.vert", "deferred/light_volume.frag");
-        programs.tiled = &resources.loadProgram("basic/image.vert", "deferred/tiled.frag");
-        programs.views = &resources.loadProgram("basic/image.vert", "deferred/views.frag");
-        m_occlusionProgram = &resources.loadProgram("basic/image.vert", "ssao/ssao.frag");
-        m_blurProgram = &resources.loadProgram("basic/image.vert", "ssao/blur.frag");
+        const auto load = [&](const std::string& vertex, const std::string& fragment) -> const stoa::Program& {
+            return resources.loadProgram(vertex, fragment);
+        };
+        const stoa::DeferredPrograms programs = stoa::DeferredPrograms::load(load);
+        m_occlusion = std::make_unique<stoa::AmbientOcclusionPass>(load("basic/image.vert", "ssao/ssao.frag"),
+                                                                    load("basic/image.vert", "ssao/blur.frag"));
         m_viewProgram = &resources.loadProgram("basic/image.vert", "ssao/ao_view.frag");
-        for (const stoa::Program* program : {m_occlusionProgram, m_blurProgram})
-            program->bindUniformBlock(stoa::FrameUniforms::kBlockName, stoa::FrameUniforms::kBinding);
         m_renderer = std::make_unique<stoa::DeferredRenderer>(programs, stoa::DeferredLabCode::fromLab08());
         m_overlay = std::make_unique<stoa::TextureOverlay>();
         m_scene = std::make_unique<stoa::PieceDrawList>(stoa::acropolisPieces());
@@ -85,21 +77,25 @@ public:
         m_kernelSeed = static_cast<std::uint32_t>(spec.getIntInRange("kernel_seed", 0, 1000000, 1));
         m_noiseSeed = static_cast<std::uint32_t>(spec.getIntInRange("noise_seed", 0, 1000000, 2));
         m_lightOptions.count = spec.getIntInRange("lights", 0, 1024, 0);
-        m_kernel.clear();
+        m_kernelChanged = true;
     }
 
     void render(glm::ivec2 size) override {
         const GLuint output = stoa::StateCache::current().drawFramebuffer();
-        if (m_kernel.empty()) prepareKernel();
+        if (m_kernelChanged) {
+            // The student's kernel and noise, once per case.
+            m_occlusion->setKernel(stoa::ssaoKernel(m_kernelSize, m_kernelSeed), stoa::ssaoNoise(m_noiseSeed));
+            m_kernelChanged = false;
+        }
         const stoa::Camera& camera = m_cameras.active();
         m_renderer->renderGeometry(m_scene->items(), camera, size);
         const bool occlusion = m_view != View::Without;
-        if (occlusion) drawOcclusion(size);
+        if (occlusion) m_occlusion->render(*m_renderer, size, {m_radius, m_bias});
         stoa::StateCache::current().bindFramebuffer(output);
         if (m_view == View::Raw || m_view == View::Blurred) {
-            (m_view == View::Raw ? *m_raw : *m_blurred).bindColorTexture(kRawUnit);
+            (m_view == View::Raw ? m_occlusion->raw() : m_occlusion->blurred()).bind(kViewUnit);
             m_viewProgram->use();
-            m_viewProgram->set("uImage", kRawUnit);
+            m_viewProgram->set("uImage", kViewUnit);
             m_overlay->draw(*m_viewProgram, {0, 0, size.x, size.y});
             return;
         }
@@ -112,7 +108,7 @@ public:
         }
         stoa::DeferredSettings settings;
         settings.reuseGBuffer = true;
-        settings.ambientOcclusion = occlusion ? m_blurred->colorAttachment(0).get() : nullptr;
+        settings.ambientOcclusion = occlusion ? &m_occlusion->blurred() : nullptr;
         m_renderer->render(m_scene->items(), lights, lighting, camera, size, settings);
     }
 
@@ -132,7 +128,7 @@ public:
         }
         if (key == 'k') {
             m_kernelSize = m_kernelSize >= stoa::kMaxKernelSize ? 8 : std::min(m_kernelSize * 2, stoa::kMaxKernelSize);
-            m_kernel.clear();
+            m_kernelChanged = true;
             std::printf("kernel: %d samples\n", m_kernelSize);
             return true;
         }
@@ -146,65 +142,15 @@ public:
     }
 
 private:
-    // The student's kernel and noise, checked, uploaded once per case.
-    void prepareKernel() {
-        m_kernel = stoa::ssaoKernel(m_kernelSize, m_kernelSeed);
-        const std::vector<glm::vec3> noise = stoa::ssaoNoise(m_noiseSeed);
-        if (static_cast<int>(m_kernel.size()) != m_kernelSize)
-            throw std::runtime_error("ssaoKernel(" + std::to_string(m_kernelSize) + ", ...) returned " +
-                                     std::to_string(m_kernel.size()) + " samples");
-        if (noise.size() != 16)
-            throw std::runtime_error("ssaoNoise() returned " + std::to_string(noise.size()) + " vectors, not 16");
-        stoa::TextureOptions options;
-        options.mipmaps = false;
-        options.linear = false;
-        options.wrap = GL_REPEAT;
-        m_noise = std::make_unique<stoa::Texture2D>(stoa::Texture2D::empty(4, 4, GL_RGB32F, options));
-        m_noise->bind(kNoiseUnit);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, 4, GL_RGB, GL_FLOAT, noise.data());
-    }
-
-    void drawOcclusion(glm::ivec2 size) {
-        if (!m_raw || m_raw->width() != size.x || m_raw->height() != size.y) {
-            stoa::FramebufferOptions options;
-            options.colorFormats = {GL_R8};
-            options.depth = false;
-            m_raw = std::make_unique<stoa::Framebuffer>(size.x, size.y, options);
-            m_blurred = std::make_unique<stoa::Framebuffer>(size.x, size.y, options);
-        }
-        stoa::beginPass(stoa::passInto(*m_raw, stoa::RenderState::overlay()));
-        m_occlusionProgram->use();
-        m_renderer->bindGBuffer(*m_occlusionProgram);
-        m_noise->bind(kNoiseUnit);
-        m_occlusionProgram->set("uNoise", kNoiseUnit);
-        m_occlusionProgram->set("uKernelSize", m_kernelSize);
-        m_occlusionProgram->set("uRadius", m_radius);
-        m_occlusionProgram->set("uBias", m_bias);
-        const GLint kernel = m_occlusionProgram->uniformLocation("uKernel");
-        glUniform3fv(kernel, m_kernelSize, &m_kernel[0].x);
-        m_overlay->draw(*m_occlusionProgram, {0, 0, size.x, size.y});
-
-        stoa::beginPass(stoa::passInto(*m_blurred, stoa::RenderState::overlay()));
-        m_blurProgram->use();
-        m_raw->bindColorTexture(kRawUnit);
-        m_blurProgram->set("uRawOcclusion", kRawUnit);
-        m_overlay->draw(*m_blurProgram, {0, 0, size.x, size.y});
-    }
-
     stoa::CameraRig m_cameras;
     std::unique_ptr<stoa::DeferredRenderer> m_renderer;
     std::unique_ptr<stoa::PieceDrawList> m_scene;
-    const stoa::Program* m_occlusionProgram = nullptr;
-    const stoa::Program* m_blurProgram = nullptr;
+    std::unique_ptr<stoa::AmbientOcclusionPass> m_occlusion;
     const stoa::Program* m_viewProgram = nullptr;
-    std::unique_ptr<stoa::Framebuffer> m_raw;
-    std::unique_ptr<stoa::Framebuffer> m_blurred;
-    std::unique_ptr<stoa::Texture2D> m_noise;
     std::unique_ptr<stoa::TextureOverlay> m_overlay;   // made once the context exists
     stoa::SceneLighting m_lighting;
     stoa::WanderingLightsOptions m_lightOptions;
-    std::vector<glm::vec3> m_kernel;
+    bool m_kernelChanged = true;   // a new case or kernel size: setKernel() before the next frame
     View m_view = View::Final;
     int m_kernelSize = 32;
     float m_radius = 1.0f;

@@ -120,13 +120,10 @@ int main(int argc, char** argv) {
 
         // The programs as lab 08's app loads them, the solution's g_buffer.glsl first on the path.
         stoa::LabResources resources({STOA_SOLUTIONS_DIR, stoa::paths::shadersDir()});
-        stoa::DeferredPrograms programs;
-        programs.geometry = &resources.loadProgram("deferred/geometry.vert", "deferred/geometry.frag");
-        programs.forward = &resources.loadProgram("deferred/forward.vert", "deferred/forward.frag");
-        programs.ambient = &resources.loadProgram("basic/image.vert", "deferred/ambient.frag");
-        programs.lightVolume = &resources.loadProgram("deferred/light_volume.vert", "deferred/light_volume.frag");
-        programs.tiled = &resources.loadProgram("basic/image.vert", "deferred/tiled.frag");
-        programs.views = &resources.loadProgram("basic/image.vert", "deferred/views.frag");
+        const auto load = [&](const std::string& vertex, const std::string& fragment) -> const stoa::Program& {
+            return resources.loadProgram(vertex, fragment);
+        };
+        const stoa::DeferredPrograms programs = stoa::DeferredPrograms::load(load);
         stoa::DeferredRenderer renderer(programs, stoa::DeferredLabCode::fromLab08());
 
         const stoa::PieceDrawList scene(stoa::acropolisAvenuePieces());

@@ -34,7 +34,9 @@
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/Texture2D.hpp>
 #include <stoa/image/Image.hpp>
+#include <stoa/lab/Lab.hpp>
 #include <stoa/render/AmbientOcclusion.hpp>
+#include <stoa/render/AmbientOcclusionPass.hpp>
 #include <stoa/render/DeferredRenderer.hpp>
 #include <stoa/render/FrameUniforms.hpp>
 #include <stoa/render/TextureOverlay.hpp>
@@ -64,70 +66,26 @@ constexpr float kRadius = 1.0f;         // the lab's defaults
 constexpr float kBias = 0.025f;
 constexpr std::uint32_t kKernelSeed = 1;
 constexpr std::uint32_t kNoiseSeed = 2;
-constexpr int kNoiseUnit = 10;          // as labs/09_ssao/lab.cpp
-constexpr int kRawUnit = 11;
 
-// Lab 09's passes as its app draws them (labs/09_ssao/lab.cpp: prepareKernel(),
-// drawOcclusion(), render()), for one kernel size.
+// Lab 09's passes as its app draws them (stoa::AmbientOcclusionPass, with
+// the solution's kernel and noise), for one kernel size.
 class OcclusionFrame {
 public:
-    struct Programs {
-        const stoa::Program* occlusion = nullptr;
-        const stoa::Program* blur = nullptr;
-    };
-
-    OcclusionFrame(const Programs& programs, stoa::DeferredRenderer& renderer, const stoa::TextureOverlay& overlay,
+    OcclusionFrame(const stoa::Program& occlusion, const stoa::Program& blur, const stoa::DeferredRenderer& renderer,
                    int kernelSize, glm::ivec2 size)
-        : m_programs(programs), m_renderer(renderer), m_overlay(overlay), m_kernelSize(kernelSize), m_size(size) {
-        m_kernel = stoa::ssaoKernel(kernelSize, kKernelSeed);
-        const std::vector<glm::vec3> noise = stoa::ssaoNoise(kNoiseSeed);
-        if (static_cast<int>(m_kernel.size()) != kernelSize || noise.size() != 16)
-            throw std::runtime_error("ssaoKernel() or ssaoNoise() returned the wrong number of vectors");
-        stoa::TextureOptions options;
-        options.mipmaps = false;
-        options.linear = false;
-        options.wrap = GL_REPEAT;
-        m_noise = std::make_unique<stoa::Texture2D>(stoa::Texture2D::empty(4, 4, GL_RGB32F, options));
-        m_noise->bind(kNoiseUnit);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, 4, GL_RGB, GL_FLOAT, noise.data());
-        stoa::FramebufferOptions targets;
-        targets.colorFormats = {GL_R8};
-        targets.depth = false;
-        m_raw = std::make_unique<stoa::Framebuffer>(size.x, size.y, targets);
-        m_blurred = std::make_unique<stoa::Framebuffer>(size.x, size.y, targets);
+        : m_pass(occlusion, blur), m_renderer(renderer), m_size(size) {
+        m_pass.setKernel(stoa::ssaoKernel(kernelSize, kKernelSeed), stoa::ssaoNoise(kNoiseSeed));
     }
 
-    void occlusionPass() const {
-        stoa::beginPass(stoa::passInto(*m_raw, stoa::RenderState::overlay()));
-        const stoa::Program& program = *m_programs.occlusion;
-        program.use();
-        m_renderer.bindGBuffer(program);
-        m_noise->bind(kNoiseUnit);
-        program.set("uNoise", kNoiseUnit);
-        program.set("uKernelSize", m_kernelSize);
-        program.set("uRadius", kRadius);
-        program.set("uBias", kBias);
-        glUniform3fv(program.uniformLocation("uKernel"), m_kernelSize, &m_kernel[0].x);
-        m_overlay.draw(program, {0, 0, m_size.x, m_size.y});
-    }
-
-    void blurPass() const {
-        stoa::beginPass(stoa::passInto(*m_blurred, stoa::RenderState::overlay()));
-        const stoa::Program& program = *m_programs.blur;
-        program.use();
-        m_raw->bindColorTexture(kRawUnit);
-        program.set("uRawOcclusion", kRawUnit);
-        m_overlay.draw(program, {0, 0, m_size.x, m_size.y});
-    }
-
-    const stoa::Texture2D* blurred() const { return m_blurred->colorAttachment(0).get(); }
+    void occlusionPass() { m_pass.occlusion(m_renderer, m_size, {kRadius, kBias}); }
+    void blurPass() { m_pass.blur(); }
+    const stoa::Texture2D* blurred() const { return &m_pass.blurred(); }
 
     /// The blurred occlusion, one byte per pixel (0 hidden .. 255 open), rows bottom-up.
     std::vector<unsigned char> readBlurred() const {
         std::vector<unsigned char> values(static_cast<std::size_t>(m_size.x) * m_size.y);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        m_blurred->readPixels(0, 0, 0, m_size.x, m_size.y, GL_RED, GL_UNSIGNED_BYTE, values.data());
+        m_pass.blurredTarget().readPixels(0, 0, 0, m_size.x, m_size.y, GL_RED, GL_UNSIGNED_BYTE, values.data());
         return values;
     }
 
@@ -150,15 +108,9 @@ public:
     }
 
 private:
-    Programs m_programs;
-    stoa::DeferredRenderer& m_renderer;
-    const stoa::TextureOverlay& m_overlay;
-    int m_kernelSize;
+    stoa::AmbientOcclusionPass m_pass;
+    const stoa::DeferredRenderer& m_renderer;
     glm::ivec2 m_size;
-    std::vector<glm::vec3> m_kernel;
-    std::unique_ptr<stoa::Texture2D> m_noise;
-    std::unique_ptr<stoa::Framebuffer> m_raw;
-    std::unique_ptr<stoa::Framebuffer> m_blurred;
 };
 
 // One row of the table: a kernel size, or 0 for the frame without occlusion.
@@ -218,28 +170,14 @@ int main(int argc, char** argv) {
         const std::filesystem::path labs = STOA_LABS_DIR;
         const std::vector<std::filesystem::path> searchPath{solutions, stoa::paths::shadersDir(), labs / "08_deferred",
                                                             labs / "09_ssao"};
-        const auto load = [&](const char* vertex, const char* fragment) {
-            return stoa::Program::fromFiles(vertex, fragment, searchPath);
+        stoa::LabResources resources(searchPath);
+        const auto load = [&](const std::string& vertex, const std::string& fragment) -> const stoa::Program& {
+            return resources.loadProgram(vertex, fragment);
         };
-        const stoa::Program geometry = load("deferred/geometry.vert", "deferred/geometry.frag");
-        const stoa::Program forward = load("deferred/forward.vert", "deferred/forward.frag");
-        const stoa::Program ambient = load("basic/image.vert", "deferred/ambient.frag");
-        const stoa::Program lightVolume = load("deferred/light_volume.vert", "deferred/light_volume.frag");
-        const stoa::Program tiled = load("basic/image.vert", "deferred/tiled.frag");
-        const stoa::Program views = load("basic/image.vert", "deferred/views.frag");
-        const stoa::Program occlusion = load("basic/image.vert", "ssao/ssao.frag");
-        const stoa::Program blur = load("basic/image.vert", "ssao/blur.frag");
-        for (const stoa::Program* program : {&occlusion, &blur})
-            program->bindUniformBlock(stoa::FrameUniforms::kBlockName, stoa::FrameUniforms::kBinding);
-        stoa::DeferredPrograms programs;
-        programs.geometry = &geometry;
-        programs.forward = &forward;
-        programs.ambient = &ambient;
-        programs.lightVolume = &lightVolume;
-        programs.tiled = &tiled;
-        programs.views = &views;
+        const stoa::DeferredPrograms programs = stoa::DeferredPrograms::load(load);
+        const stoa::Program& occlusion = load("basic/image.vert", "ssao/ssao.frag");
+        const stoa::Program& blur = load("basic/image.vert", "ssao/blur.frag");
         stoa::DeferredRenderer renderer(programs, stoa::DeferredLabCode::fromLab08());
-        const stoa::TextureOverlay overlay;
         const stoa::PieceDrawList scene(stoa::acropolisPieces());
 
         stoa::SceneLighting lighting;   // as the lab
@@ -259,8 +197,7 @@ int main(int argc, char** argv) {
         std::vector<Row> rows(kKernelSizes.size() + 1);
         for (std::size_t i = 0; i < kKernelSizes.size(); ++i) {
             rows[i].kernelSize = kKernelSizes[i];
-            rows[i].frame = std::make_unique<OcclusionFrame>(OcclusionFrame::Programs{&occlusion, &blur}, renderer,
-                                                             overlay, kKernelSizes[i], size);
+            rows[i].frame = std::make_unique<OcclusionFrame>(occlusion, blur, renderer, kKernelSizes[i], size);
         }
 
         // One frame; with `split`, glFinish() after each pass and its time kept.

@@ -34,6 +34,18 @@ enum ViewMode { kPresent = 0, kAlbedo = 1, kNormals = 2, kPositions = 3, kSpecul
 
 } // namespace
 
+DeferredPrograms DeferredPrograms::load(
+    const std::function<const Program&(const std::string&, const std::string&)>& load) {
+    DeferredPrograms programs;
+    programs.geometry = &load("deferred/geometry.vert", "deferred/geometry.frag");
+    programs.forward = &load("deferred/forward.vert", "deferred/forward.frag");
+    programs.ambient = &load("basic/image.vert", "deferred/ambient.frag");
+    programs.lightVolume = &load("deferred/light_volume.vert", "deferred/light_volume.frag");
+    programs.tiled = &load("basic/image.vert", "deferred/tiled.frag");
+    programs.views = &load("basic/image.vert", "deferred/views.frag");
+    return programs;
+}
+
 const char* toString(LightingMode mode) {
     switch (mode) {
     case LightingMode::Forward: return "forward";

@@ -37,6 +37,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace stoa {
@@ -66,6 +67,11 @@ const char* toString(DeferredView view);
 /// The programs, loaded by the lab (their search path holds the student's
 /// GLSL). They must outlive the renderer.
 struct DeferredPrograms {
+    /// The six through `load` (LabResources::loadProgram, for instance):
+    ///   DeferredPrograms::load([&](const std::string& v, const std::string& f) -> const Program& {
+    ///       return resources.loadProgram(v, f); });
+    static DeferredPrograms load(const std::function<const Program&(const std::string&, const std::string&)>& load);
+
     const Program* geometry = nullptr;      // deferred/geometry.vert + deferred/geometry.frag
     const Program* forward = nullptr;       // deferred/forward.vert + deferred/forward.frag
     const Program* ambient = nullptr;       // basic/image.vert + deferred/ambient.frag
