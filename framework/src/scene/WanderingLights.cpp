@@ -1,4 +1,5 @@
 #include <stoa/core/Assert.hpp>
+#include <stoa/core/HashRandom.hpp>
 #include <stoa/scene/WanderingLights.hpp>
 
 #include <glm/glm.hpp>
@@ -8,26 +9,6 @@
 namespace stoa {
 
 namespace {
-
-// A small counter-based generator (the "lowbias32" integer hash of a counter):
-// the same numbers everywhere, unlike std::uniform_real_distribution.
-class HashRandom {
-public:
-    explicit HashRandom(std::uint32_t seed) : m_state(seed * 0x9E3779B9u + 0x7F4A7C15u) {}
-    float next() {   // uniform in [0, 1)
-        std::uint32_t x = m_state++;
-        x ^= x >> 16u;
-        x *= 0x7feb352du;
-        x ^= x >> 15u;
-        x *= 0x846ca68bu;
-        x ^= x >> 16u;
-        return static_cast<float>(x >> 8u) * (1.0f / 16777216.0f);
-    }
-    float between(float low, float high) { return low + (high - low) * next(); }
-
-private:
-    std::uint32_t m_state;
-};
 
 // A saturated colour of hue h in [0, 1) (HSV with s = 0.75, v = 1).
 glm::vec3 hueColor(float h) {
@@ -40,7 +21,7 @@ glm::vec3 hueColor(float h) {
 
 std::vector<PointLight> wanderingLights(const WanderingLightsOptions& options, float seconds) {
     STOA_ASSERT(options.count >= 0, "wanderingLights(): count must not be negative");
-    HashRandom random(options.seed);
+    HashRandom random(options.seed, 0x7F4A7C15u);
     std::vector<PointLight> lights;
     lights.reserve(static_cast<std::size_t>(options.count));
     for (int i = 0; i < options.count; ++i) {

@@ -8,6 +8,8 @@
 // machine and compiler (std::uniform_real_distribution's are not), so that a
 // graded picture depends on the seed alone.
 
+#include <stoa/core/HashRandom.hpp>
+
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -16,23 +18,9 @@
 namespace stoa {
 
 /// Uniform numbers in [0, 1) from a seed: the "lowbias32" integer hash of a
-/// counter that starts from the seed. Draw them in the order the docs give.
-class KernelRandom {
-public:
-    explicit KernelRandom(std::uint32_t seed) : m_counter(seed * 0x9E3779B9u) {}
-    float next() {
-        std::uint32_t x = m_counter++;
-        x ^= x >> 16u;
-        x *= 0x7feb352du;
-        x ^= x >> 15u;
-        x *= 0x846ca68bu;
-        x ^= x >> 16u;
-        return static_cast<float>(x >> 8u) * (1.0f / 16777216.0f);   // 24 bits, exact in a float
-    }
-
-private:
-    std::uint32_t m_counter;
-};
+/// counter that starts from the seed (stoa/core/HashRandom.hpp). Draw them in
+/// the order the docs give.
+using KernelRandom = HashRandom;
 
 /// The largest kernel the SSAO shader takes (shaders/ssao/ssao.frag's MAX_KERNEL_SIZE).
 constexpr int kMaxKernelSize = 64;
