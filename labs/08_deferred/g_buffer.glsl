@@ -9,8 +9,8 @@
 // keeps values in [0, 1] only): the octahedral mapping of Cigolle et al. (2014).
 vec2 packNormal(vec3 n) {
     // TODO(lab08): project onto the octahedron |x| + |y| + |z| = 1, fold the
-    // lower half (z < 0) over the diagonals, then map [-1, 1] to [0, 1]
-    // (docs: "Packing normals").
+    // lower half (z < 0) out over the diamond's edges into its corners, then
+    // map [-1, 1] to [0, 1] (docs: "Packing normals").
     return STOA_NOT_IMPLEMENTED(vec2(0.5));
 }
 

@@ -4,9 +4,11 @@
 //   basis = kernelBasis(N, noiseVector(uNoise, pixel));
 //   ao = ambientOcclusion(P, basis);
 // and shaders/ssao/blur.frag, a second pass, blurAmbientOcclusion(uRawOcclusion, pixel).
-// Provided by ssao.frag: uKernel[i] (i < uKernelSize), uRadius, uBias,
-// uProjection (view -> clip), and sceneDepthAt(uv), the view-space z of the
-// surface the G-buffer holds at texture coordinates uv.
+// Provided by the files ssao.frag includes before this one
+// (shaders/ssao/ssao_inputs.glsl, shaders/common/frame.glsl): uKernel[i]
+// (i < uKernelSize), uRadius, uBias, uProjection (view -> clip), and
+// sceneDepthAt(uv), the view-space z of the surface the G-buffer holds at
+// texture coordinates uv.
 
 // The random vector of this pixel: the 4 x 4 noise tile repeated over the
 // picture, one texel per pixel.

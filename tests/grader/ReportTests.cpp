@@ -207,3 +207,22 @@ TEST_CASE("a lab that waits for an earlier lab's stub points to that lab", "[gra
     CHECK(text.find("start with docs/labs/06_culling.md") != std::string::npos);
     CHECK(text.find("start with docs/labs/07_picking.md") == std::string::npos);
 }
+
+TEST_CASE("printReport: a lab where nothing was attempted names the stub its first case ran into",
+          "[grader][report]") {
+    const std::vector<GradeResult> results = {
+        result("09_ssao", "column_bases_raw", GradeStatus::NotAttempted, 0, 2,
+               "not implemented: blurAmbientOcclusion (/home/student/stoa/labs/09_ssao/ssao.glsl:67)"),
+        result("09_ssao", "statue_final", GradeStatus::NotAttempted, 0, 2,
+               "not implemented: blurAmbientOcclusion (/home/student/stoa/labs/09_ssao/ssao.glsl:67)"),
+        result("06_culling", "field_walk", GradeStatus::NotAttempted, 0, 2, "not implemented: meshBoundingSphere()"),
+    };
+    std::ostringstream out;
+    printReport(out, results, summarize(results));
+    const std::string text = out.str();
+    // The file without its folders: the line stays readable.
+    CHECK(text.find("first stub: blurAmbientOcclusion (ssao.glsl:67); start with docs/labs/09_ssao.md") !=
+          std::string::npos);
+    CHECK(text.find("first stub: meshBoundingSphere(); start with docs/labs/06_culling.md") != std::string::npos);
+    CHECK(text.find("/home/student") == std::string::npos);
+}

@@ -175,6 +175,24 @@ std::string formatPoints(double points) {
     return formatted == "-0" ? "0" : formatted;
 }
 
+namespace {
+
+// "not implemented: F (lab L)" or "not implemented: F (path/to/file.glsl:7)" -> "F" or
+// "F (file.glsl:7)": the stub a not-attempted case ran into, without folders.
+std::string stubNamed(const std::string& reason) {
+    std::string stub = reason.substr(0, reason.rfind(" (lab "));
+    const std::string prefix = "not implemented: ";
+    if (stub.compare(0, prefix.size(), prefix) != 0) return "";
+    stub = stub.substr(prefix.size());
+    const std::size_t open = stub.find(" (");
+    const std::size_t slash = stub.rfind('/');
+    if (open != std::string::npos && slash != std::string::npos && slash > open)
+        stub = stub.substr(0, open + 2) + stub.substr(slash + 1);
+    return stub;
+}
+
+} // namespace
+
 void printReport(std::ostream& out, const std::vector<GradeResult>& results, const Totals& totals) {
     std::size_t labWidth = 3, caseWidth = 4, statusWidth = 6, pointsWidth = 6, pixelsWidth = 16, flipWidth = 9;
     bool uniform = !results.empty() && sameThresholds(results);
@@ -221,16 +239,17 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
                 << padded(statusName(GradeStatus::NotAttempted), statusWidth) << "  "
                 << padded(formatPoints(lab->points) + " / " + formatPoints(lab->maxPoints), pointsWidth);
             const std::string first = labToStartWith(result);
+            const std::string stub = stubNamed(result.reason);
             if (first != result.lab) {
-                // "not implemented: F (lab L)" -> "F"
-                std::string stub = result.reason.substr(0, result.reason.rfind(" (lab "));
-                const std::string prefix = "not implemented: ";
-                if (stub.compare(0, prefix.size(), prefix) == 0) stub = stub.substr(prefix.size());
                 out << "  waits for lab " << first << " (" << stub << " is a stub there): start with docs/labs/"
                     << first << ".md\n";
+            } else {
+                // The stub the first case ran into, when it has a short name.
+                if (!stub.empty() && stub.size() <= 60)
+                    out << "  first stub: " << stub << "; start with docs/labs/" << result.lab << ".md\n";
+                else
+                    out << "  start with docs/labs/" << result.lab << ".md\n";
             }
-            else
-                out << "  start with docs/labs/" << result.lab << ".md\n";
             continue;
         }
         std::string row = padded(result.lab, labWidth) + "  " + padded(caseLabel(result), caseWidth) + "  " +
