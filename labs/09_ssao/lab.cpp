@@ -84,7 +84,8 @@ public:
         const GLuint output = stoa::StateCache::current().drawFramebuffer();
         if (m_kernelChanged) {
             // The student's kernel and noise, once per case.
-            m_occlusion->setKernel(stoa::ssaoKernel(m_kernelSize, m_kernelSeed), stoa::ssaoNoise(m_noiseSeed));
+            const std::vector<glm::vec3> kernel = stoa::ssaoKernel(m_kernelSize, m_kernelSeed);
+            m_occlusion->setKernel(kernel, stoa::ssaoNoise(m_noiseSeed));
             m_kernelChanged = false;
         }
         const stoa::Camera& camera = m_cameras.active();

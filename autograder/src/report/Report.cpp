@@ -244,11 +244,11 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
                 out << "  waits for lab " << first << " (" << stub << " is a stub there): start with docs/labs/"
                     << first << ".md\n";
             } else {
-                // The stub the first case ran into, when it has a short name.
-                if (!stub.empty() && stub.size() <= 60)
-                    out << "  first stub: " << stub << "; start with docs/labs/" << result.lab << ".md\n";
-                else
-                    out << "  start with docs/labs/" << result.lab << ".md\n";
+                out << "  start with docs/labs/" << result.lab << ".md\n";
+                // The stub the first case ran into, on a line of its own under that text.
+                const std::size_t column = labWidth + caseWidth + statusWidth + pointsWidth + 8;
+                const std::string line = std::string(column, ' ') + "first stub: " + stub;
+                if (!stub.empty() && line.size() <= 100) out << line << "\n";
             }
             continue;
         }
