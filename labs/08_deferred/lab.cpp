@@ -54,6 +54,7 @@ public:
 
         m_scene = std::make_unique<stoa::PieceDrawList>(stoa::acropolisAvenuePieces());
         std::printf("scene: %zu triangles in %zu draws\n", m_scene->triangleCount(), m_scene->items().size());
+        std::fflush(stdout);   // before a stub's message: the grader reads the stub from the last line
     }
 
     void loadCase(const stoa::CaseSpec& spec) override {

@@ -82,14 +82,14 @@ public:
 
     void render(glm::ivec2 size) override {
         const GLuint output = stoa::StateCache::current().drawFramebuffer();
+        const stoa::Camera& camera = m_cameras.active();
+        m_renderer->renderGeometry(m_scene->items(), camera, size);   // lab 01's camera and lab 08's G-buffer first
         if (m_kernelChanged) {
             // The student's kernel and noise, once per case.
             const std::vector<glm::vec3> kernel = stoa::ssaoKernel(m_kernelSize, m_kernelSeed);
             m_occlusion->setKernel(kernel, stoa::ssaoNoise(m_noiseSeed));
             m_kernelChanged = false;
         }
-        const stoa::Camera& camera = m_cameras.active();
-        m_renderer->renderGeometry(m_scene->items(), camera, size);
         const bool occlusion = m_view != View::Without;
         if (occlusion) m_occlusion->render(*m_renderer, size, {m_radius, m_bias});
         stoa::StateCache::current().bindFramebuffer(output);

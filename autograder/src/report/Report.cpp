@@ -245,10 +245,12 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
                     << first << ".md\n";
             } else {
                 out << "  start with docs/labs/" << result.lab << ".md\n";
-                // The stub the first case ran into, on a line of its own under that text.
-                const std::size_t column = labWidth + caseWidth + statusWidth + pointsWidth + 8;
-                const std::string line = std::string(column, ' ') + "first stub: " + stub;
-                if (!stub.empty() && line.size() <= 100) out << line << "\n";
+                // The stub the first case ran into, on a line of its own under that text (or
+                // under the case column, when the table is too wide for that).
+                const std::string text = "first stub: " + stub;
+                std::size_t column = labWidth + caseWidth + statusWidth + pointsWidth + 8;
+                if (column + text.size() > 100) column = labWidth + 2;
+                if (!stub.empty() && column + text.size() <= 100) out << std::string(column, ' ') << text << "\n";
             }
             continue;
         }
