@@ -27,7 +27,6 @@
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/DeferredRenderer.hpp>
-#include <stoa/render/DeferredShading.hpp>
 #include <stoa/scene/AcropolisScene.hpp>
 #include <stoa/scene/PieceDrawList.hpp>
 #include <stoa/scene/WanderingLights.hpp>

@@ -8,7 +8,6 @@
 //         3  positions: the world position rebuilt from depth, fract() of each
 //            coordinate (a 1 m grid in colour, offset by half a metre)
 //         4  specular strength   5  a heat map of uImage.r / uHeatScale
-//         6  uImage.r as grey (lab 09's ambient occlusion)
 
 uniform sampler2D uImage;
 uniform int uMode;
@@ -34,10 +33,6 @@ void main() {
     }
     if (uMode == 5) {
         fragColor = vec4(heat(texelFetch(uImage, pixel, 0).r / uHeatScale), 1.0);
-        return;
-    }
-    if (uMode == 6) {
-        fragColor = vec4(vec3(texelFetch(uImage, pixel, 0).r), 1.0);
         return;
     }
     Surface surface = readSurface(pixel);

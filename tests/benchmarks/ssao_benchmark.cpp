@@ -30,7 +30,6 @@
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Program.hpp>
-#include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/Texture2D.hpp>
 #include <stoa/image/Image.hpp>
@@ -38,8 +37,6 @@
 #include <stoa/render/AmbientOcclusion.hpp>
 #include <stoa/render/AmbientOcclusionPass.hpp>
 #include <stoa/render/DeferredRenderer.hpp>
-#include <stoa/render/FrameUniforms.hpp>
-#include <stoa/render/TextureOverlay.hpp>
 #include <stoa/scene/AcropolisScene.hpp>
 #include <stoa/scene/PieceDrawList.hpp>
 

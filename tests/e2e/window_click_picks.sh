@@ -29,10 +29,5 @@ sleep 0.5
 after=$(grep -c "^picked" "$work/stdout.txt" || true)
 [ "$before" = "$after" ] || fail "a drag picked something"
 
-xdotool key Escape
-for _ in $(seq 1 50); do
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.1
-done
-kill -0 "$pid" 2>/dev/null && fail "Escape did not quit"
+quit_with_escape
 echo "the click picked column 3 and the drag picked nothing"

@@ -4,6 +4,7 @@
 #   start_lab_window ARGS   start $program ARGS (output in $work/stdout.txt and
 #                           stderr.txt; killed when the script exits), wait up to
 #                           10 s for its window, focus it; sets `pid` and `window`
+#   quit_with_escape        press Escape, wait up to 5 s for the program to end, fail if it does not
 # No window manager runs under Xvfb: the window gets the keyboard focus directly.
 
 if [ "${STOA_INSIDE_XVFB:-}" != 1 ]; then
@@ -33,4 +34,13 @@ start_lab_window() {
   done
   [ -n "$window" ] || fail "no window titled 'Stoa lab' appeared within 10 s"
   xdotool windowfocus --sync "$window"
+}
+
+quit_with_escape() {
+  xdotool key Escape   # to the focused window (XTEST; --window would send a synthetic event)
+  for _ in $(seq 1 50); do
+    kill -0 "$pid" 2>/dev/null || return 0
+    sleep 0.1
+  done
+  fail "the program did not quit on Escape"
 }

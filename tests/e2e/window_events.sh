@@ -52,12 +52,7 @@ expect "^event KeyDown h$"
   fail "the app printed its help for H, which the lab took"
 kill -0 "$pid" 2>/dev/null || fail "the program died"
 
-xdotool key Escape
-for _ in $(seq 1 50); do
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.1
-done
-kill -0 "$pid" 2>/dev/null && fail "the program did not quit on Escape"
+quit_with_escape
 wait "$pid" || fail "the program's exit status after Escape was not 0"
 trap - EXIT
 echo "PASS: keys down and up, special keys, modifiers, text, mouse buttons, the wheel and a resize reached the lab"

@@ -23,10 +23,5 @@ for line in "${lines[@]}"; do
   grep -qF -- "$line" "$work/stdout.txt" || fail "after the keys '$keys' the program did not print \"$line\""
 done
 
-xdotool key --window "$window" Escape
-for _ in $(seq 1 50); do
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.1
-done
-kill -0 "$pid" 2>/dev/null && fail "Escape did not quit"
+quit_with_escape
 echo "the keys '$keys' printed: ${expected//|/; }"

@@ -31,13 +31,8 @@ case $title in
   *) fail "the window title does not name the stub: '$title'" ;;
 esac
 
-xdotool key Escape
+quit_with_escape
 status=0
-for _ in $(seq 1 50); do
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.1
-done
-kill -0 "$pid" 2>/dev/null && fail "the program did not quit on Escape"
 wait "$pid" || status=$?
 trap - EXIT
 echo "window title: $title"

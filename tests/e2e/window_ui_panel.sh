@@ -37,12 +37,7 @@ grep -q "ui panel on" stdout.txt || fail "F1 did not turn the UI panel on"
 sleep 0.3   # a frame or two with the panel
 save after.png 2
 kill -0 "$pid" 2>/dev/null || fail "the program died with the panel on"
-xdotool key Escape
-for _ in $(seq 1 50); do
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.1
-done
-kill -0 "$pid" 2>/dev/null && fail "the program did not quit on Escape"
+quit_with_escape
 trap - EXIT
 python3 "$here/check_ui_panel.py" before.png after.png || fail "the panel is not in the screenshot"
 echo "PASS: the ImGui panel draws over the lab (screenshots in $work)"
