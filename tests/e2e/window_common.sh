@@ -9,7 +9,7 @@
 
 if [ "${STOA_INSIDE_XVFB:-}" != 1 ]; then
   mkdir -p "$work"
-  STOA_INSIDE_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
+  STOA_INSIDE_XVFB=1 exec "$(dirname "$0")/run_in_xvfb.sh" "$0" "$@"
 fi
 
 fail() {

@@ -11,7 +11,7 @@ rm -f "$window"
 # LeakSanitizer cannot tell the driver's allocations from Stoa's; the headless
 # runs below check the same lab code with leak detection on.
 ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" \
-  xvfb-run -a -s "-screen 0 1280x1024x24" "$program" --case "$case_name" --screenshot "$window"
+  "$(dirname "$0")/run_in_xvfb.sh" "$program" --case "$case_name" --screenshot "$window"
 for backend in osmesa egl; do
   headless="$work/$case_name.$backend.png"
   "$program" --render "$case_name" --output "$headless" --backend "$backend"
