@@ -31,6 +31,12 @@ if(NOT meshoptimizer_FOUND)
   message(FATAL_ERROR "Stoa needs meshoptimizer (Debian package: libmeshoptimizer-dev). Run .ci/install-deps.sh.")
 endif()
 
+# pugixml reads lab 10's crowd worlds (crowd/CrowdXml.cpp).
+find_package(pugixml CONFIG QUIET)
+if(NOT pugixml_FOUND)
+  message(FATAL_ERROR "Stoa needs pugixml (Debian package: libpugixml-dev). Run .ci/install-deps.sh.")
+endif()
+
 find_path(GLM_INCLUDE_DIR glm/glm.hpp)
 if(NOT GLM_INCLUDE_DIR)
   message(FATAL_ERROR "Stoa needs GLM (Debian package: libglm-dev). Run .ci/install-deps.sh.")
