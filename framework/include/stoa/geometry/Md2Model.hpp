@@ -56,7 +56,12 @@ struct Md2Model {
 };
 
 /// The format's fixed table of 162 unit normals that a vertex's normal index
-/// points into.
+/// points into: the corners of an icosahedron whose edges were halved twice,
+/// pushed out onto the unit sphere (10 * 4^2 + 2 = 162), built at start-up
+/// the same way on every machine. It is Stoa's own table, not id Software's:
+/// the same kind of directions in another order, so files written by
+/// encodeMd2() round-trip, but a third-party MD2 file's normals decode to other
+/// directions (recompute them from its triangles; Md2Model.cpp explains).
 const std::array<glm::vec3, 162>& md2NormalTable();
 
 /// The table index of the normal closest to `normal` (the encoder's choice).
@@ -68,6 +73,7 @@ struct Md2Limits {
     static constexpr int maxTriangles = 4096;
     static constexpr int maxFrames = 512;
     static constexpr int maxSkins = 32;
+    static constexpr int maxTexCoords = 3 * maxTriangles;   // one per triangle corner at most
 };
 
 /// Reads an MD2 file. Throws InputError naming the file and what was wrong:
@@ -75,7 +81,12 @@ struct Md2Limits {
 /// count that is negative or past Md2Limits, an offset or a block that lies
 /// outside the file, a frame size that does not match the vertex count, a
 /// triangle that indexes a vertex or texture coordinate that does not exist,
-/// a normal index >= 162, a skin size of zero.
+/// a normal index >= 162, a skin size of zero. Also refused: a model without
+/// a vertex, a texture coordinate, a triangle or a frame; a frame's scale or
+/// translation that is not finite; a frame name without a NUL within its 16
+/// bytes or with a byte that is not printable ASCII. GL commands are not read
+/// (their block only has to lie inside the file). Animations group consecutive
+/// frames by their names without trailing digits ("run1".."run6" make "run").
 Md2Model loadMd2(const std::filesystem::path& path);
 /// The same for a file in memory; `name` is the file named in errors.
 Md2Model decodeMd2(const std::uint8_t* bytes, std::size_t size, const std::string& name);
@@ -83,6 +94,9 @@ Md2Model decodeMd2(const std::uint8_t* bytes, std::size_t size, const std::strin
 /// Writes `model` as an MD2 file's bytes: each frame's positions compressed
 /// to 8 bits per axis over that frame's bounds, normals to table indices,
 /// texture coordinates to skin pixels. The asset generator and the tests use it.
+/// A decoded position lies within half a step (the frame's extent / 255 / 2 per
+/// axis) of the original. Skin names, frame names and counts must fit the
+/// format (std::invalid_argument otherwise: a programming error, not input).
 std::string encodeMd2(const Md2Model& model);
 
 } // namespace stoa
