@@ -1,0 +1,730 @@
+#include <stoa/crowd/CrowdXml.hpp>
+
+#include <stoa/core/InputError.hpp>
+#include <stoa/core/InputFile.hpp>
+
+#include <pugixml.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <initializer_list>
+#include <limits>
+#include <optional>
+#include <string_view>
+#include <system_error>
+
+// The loader reads every file of a world in one pass, element by element, and
+// checks each element as it goes: its attributes against the list it may
+// carry, its numbers against their ranges, its children against the elements
+// allowed there. Names that may be defined later in the pass (a type's
+// behaviour, the types named in conditions and actions, a spawn's type and
+// team) are remembered with their file and line and checked once every file
+// has been read. docs/crowds-xml.md describes the format.
+
+namespace stoa {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// One parsed XML file, kept with its text so that an element's byte offset
+/// (pugixml's offset_debug()) becomes a 1-based line.
+class XmlFile {
+public:
+    /// Parses `text`; `name` is the file named in errors and its folder the
+    /// one relative paths in the file are resolved against.
+    XmlFile(std::string text, fs::path name) : m_name(name.string()), m_folder(name.parent_path()), m_text(std::move(text)) {
+        m_lineStarts.push_back(0);
+        for (std::size_t i = 0; i < m_text.size(); ++i) {
+            const bool lineFeed = m_text[i] == '\n';
+            const bool loneReturn = m_text[i] == '\r' && (i + 1 == m_text.size() || m_text[i + 1] != '\n');
+            if (lineFeed || loneReturn) m_lineStarts.push_back(i + 1);
+        }
+        // encoding_utf8: pugixml converts nothing, so its offsets are offsets into m_text.
+        // parse_default expands only XML's five built-in entities and character references;
+        // it reads no DOCTYPE, so it never expands an entity the file defines or fetches one.
+        const pugi::xml_parse_result result =
+            m_document.load_buffer(m_text.data(), m_text.size(), pugi::parse_default, pugi::encoding_utf8);
+        if (!result) {
+            throw InputError(m_name, lineOfOffset(result.offset), std::string("malformed XML: ") + result.description());
+        }
+    }
+
+    const std::string& name() const { return m_name; }
+    const fs::path& folder() const { return m_folder; }
+    const pugi::xml_document& document() const { return m_document; }
+
+    int line(pugi::xml_node node) const { return lineOfOffset(node.offset_debug()); }
+
+    [[noreturn]] void fail(pugi::xml_node node, const std::string& message) const {
+        throw InputError(m_name, line(node), message);
+    }
+
+private:
+    int lineOfOffset(std::ptrdiff_t offset) const {
+        if (offset < 0) return 0;
+        const auto after = std::upper_bound(m_lineStarts.begin(), m_lineStarts.end(), static_cast<std::size_t>(offset));
+        return static_cast<int>(after - m_lineStarts.begin());
+    }
+
+    std::string m_name;
+    fs::path m_folder;
+    std::string m_text;
+    std::vector<std::size_t> m_lineStarts;  // byte offset of each line's first byte
+    pugi::xml_document m_document;
+};
+
+std::string tag(pugi::xml_node node) { return "<" + quoteInput(node.name()) + ">"; }
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+    return text.empty() ? "(none)" : text;
+}
+
+/// Throws unless every attribute of `node` is one of `allowed`, each once.
+void checkAttributes(const XmlFile& file, pugi::xml_node node, std::initializer_list<const char*> allowed) {
+    for (pugi::xml_attribute attribute = node.first_attribute(); attribute; attribute = attribute.next_attribute()) {
+        const std::string name = attribute.name();
+        const bool known = std::any_of(allowed.begin(), allowed.end(), [&](const char* a) { return name == a; });
+        if (!known) {
+            std::string expected;
+            for (const char* a : allowed) expected += (expected.empty() ? "" : ", ") + std::string(a);
+            file.fail(node, "unknown attribute '" + quoteInput(name) + "' on " + tag(node) +
+                                (expected.empty() ? "; it takes no attributes" : "; expected one of: " + expected));
+        }
+        for (pugi::xml_attribute later = attribute.next_attribute(); later; later = later.next_attribute()) {
+            if (name == later.name()) file.fail(node, "the attribute '" + quoteInput(name) + "' appears twice on " + tag(node));
+        }
+    }
+}
+
+/// The element children of `node`; text other than white space is an error.
+std::vector<pugi::xml_node> childElements(const XmlFile& file, pugi::xml_node node) {
+    std::vector<pugi::xml_node> children;
+    for (pugi::xml_node child : node.children()) {
+        if (child.type() == pugi::node_element) {
+            children.push_back(child);
+        } else if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) {
+            file.fail(child, "unexpected text '" + quoteInput(child.value()) + "' in " + tag(node) +
+                                 "; the format keeps everything in attributes");
+        }
+    }
+    return children;
+}
+
+/// An element that may hold nothing, with the attributes it may carry.
+void checkLeaf(const XmlFile& file, pugi::xml_node node, std::initializer_list<const char*> allowed) {
+    checkAttributes(file, node, allowed);
+    const std::vector<pugi::xml_node> children = childElements(file, node);
+    if (!children.empty()) file.fail(children[0], tag(node) + " holds no elements; found " + tag(children[0]));
+}
+
+std::string attributeText(pugi::xml_attribute attribute) {
+    return std::string(attribute.name()) + "=\"" + quoteInput(attribute.value()) + "\"";
+}
+
+/// The attribute's text; a missing or empty attribute is an error.
+std::string requiredText(const XmlFile& file, pugi::xml_node node, const char* name) {
+    const pugi::xml_attribute attribute = node.attribute(name);
+    if (!attribute) file.fail(node, "missing attribute '" + std::string(name) + "' on " + tag(node));
+    if (*attribute.value() == '\0') file.fail(node, "the attribute '" + std::string(name) + "' on " + tag(node) + " is empty");
+    return attribute.value();
+}
+
+std::string optionalText(const XmlFile& file, pugi::xml_node node, const char* name, const std::string& fallback) {
+    return node.attribute(name) ? requiredText(file, node, name) : fallback;
+}
+
+/// The whole of `text` as a finite number, or nothing ("", "1.5m", "nan", "inf", "1e999").
+/// std::from_chars ignores the locale, unlike strtod.
+std::optional<double> parseNumber(std::string_view text) {
+    if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
+    if (!std::isfinite(value) || !std::isfinite(static_cast<float>(value))) return std::nullopt;
+    return value;
+}
+
+enum class Range { Finite, NonNegative, Positive, UnitInterval, Step };
+
+bool inRange(double value, Range range) {
+    switch (range) {
+    case Range::Finite: return true;
+    case Range::NonNegative: return value >= 0.0;
+    case Range::Positive: return value > 0.0;
+    case Range::UnitInterval: return value >= 0.0 && value <= 1.0;
+    case Range::Step: return value > 0.0 && value <= 1.0;
+    }
+    return false;
+}
+
+const char* describe(Range range) {
+    switch (range) {
+    case Range::Finite: return "a finite number";
+    case Range::NonNegative: return "0 or more";
+    case Range::Positive: return "greater than 0";
+    case Range::UnitInterval: return "between 0 and 1";
+    case Range::Step: return "greater than 0 and at most 1 (seconds)";
+    }
+    return "";
+}
+
+float number(const XmlFile& file, pugi::xml_node node, const char* name, std::optional<float> fallback, Range range) {
+    const pugi::xml_attribute attribute = node.attribute(name);
+    if (!attribute) {
+        if (fallback) return *fallback;
+        file.fail(node, "missing attribute '" + std::string(name) + "' on " + tag(node));
+    }
+    const std::optional<double> value = parseNumber(attribute.value());
+    if (!value) file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is not a number");
+    if (!inRange(*value, range)) {
+        file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is out of range: it must be " +
+                            describe(range));
+    }
+    return static_cast<float>(*value);
+}
+
+/// A whole number in [least, most].
+std::int64_t wholeNumber(const XmlFile& file, pugi::xml_node node, const char* name, std::optional<std::int64_t> fallback,
+                         std::int64_t least, std::int64_t most) {
+    const pugi::xml_attribute attribute = node.attribute(name);
+    if (!attribute) {
+        if (fallback) return *fallback;
+        file.fail(node, "missing attribute '" + std::string(name) + "' on " + tag(node));
+    }
+    std::string_view text = attribute.value();
+    if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+    std::int64_t value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    const bool whole = !text.empty() && end == text.data() + text.size();
+    if (error == std::errc() && !whole && parseNumber(attribute.value())) {
+        file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is not a whole number");
+    }
+    if (error == std::errc::invalid_argument || !whole) {
+        file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is not a number");
+    }
+    if (error == std::errc::result_out_of_range || value < least || value > most) {
+        file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is out of range: it must be " +
+                            std::to_string(least) + " to " + std::to_string(most));
+    }
+    return value;
+}
+
+/// "x z": two finite numbers separated by white space.
+glm::vec2 coordinates(const XmlFile& file, pugi::xml_node node, const char* name, glm::vec2 fallback) {
+    const pugi::xml_attribute attribute = node.attribute(name);
+    if (!attribute) return fallback;
+    std::vector<std::string_view> words;
+    const std::string_view text = attribute.value();
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t start = text.find_first_not_of(" \t\r\n", at);
+        if (start == std::string_view::npos) break;
+        const std::size_t end = std::min(text.find_first_of(" \t\r\n", start), text.size());
+        words.push_back(text.substr(start, end - start));
+        at = end;
+    }
+    std::optional<double> x, z;
+    if (words.size() == 2) x = parseNumber(words[0]), z = parseNumber(words[1]);
+    if (!x || !z) {
+        file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) +
+                            " is not a pair of numbers \"x z\" (metres)");
+    }
+    return {static_cast<float>(*x), static_cast<float>(*z)};
+}
+
+/// A path as written, after the folder of the file that names it (an absolute path stays as it is).
+fs::path resolved(const XmlFile& file, const std::string& path) { return file.folder() / path; }
+
+/// Where a type name is used, to check once every type is known.
+struct TypeReference {
+    std::string name;
+    std::string file;
+    int line;
+    std::string user;   // "<sees>", "<seek>"
+};
+
+/// A file being read, for include loops.
+struct OpenFile {
+    fs::path identity;  // canonical when possible
+    std::string name;
+};
+
+fs::path identity(const fs::path& path) {
+    std::error_code error;
+    fs::path canonical = fs::weakly_canonical(path, error);
+    if (error) return fs::absolute(path, error).lexically_normal();
+    return canonical;
+}
+
+class Loader {
+public:
+    CrowdWorld read(std::string text, const fs::path& name);
+
+private:
+    void readWorld(const XmlFile& file, pugi::xml_node world);
+    void readAgentsChild(const XmlFile& file, pugi::xml_node node, int depth);
+    void readInclude(const XmlFile& file, pugi::xml_node node, int depth);
+    void readType(const XmlFile& file, pugi::xml_node node);
+    void readBehaviour(const XmlFile& file, pugi::xml_node node);
+    void readStateMachine(const XmlFile& file, pugi::xml_node node, Behaviour& behaviour);
+    void readSubsumption(const XmlFile& file, pugi::xml_node node, Behaviour& behaviour);
+    bool readAction(const XmlFile& file, pugi::xml_node node, std::vector<Action>& actions);
+    Condition readCondition(const XmlFile& file, pugi::xml_node node);
+    void readGround(const XmlFile& file, pugi::xml_node node);
+    void checkNames();
+
+    void useType(const XmlFile& file, pugi::xml_node node, const std::string& name) {
+        m_typeReferences.push_back({name, file.name(), file.line(node), tag(node)});
+    }
+
+    CrowdWorld m_world;
+    std::vector<OpenFile> m_open;              // the world file, then each include being read
+    std::vector<std::string> m_typeFiles;      // the file of each of m_world.types
+    std::vector<std::string> m_behaviourFiles; // the file of each of m_world.behaviours
+    std::vector<TypeReference> m_typeReferences;
+};
+
+CrowdWorld Loader::read(std::string text, const fs::path& name) {
+    const XmlFile file(std::move(text), name);
+    m_world.file = name;
+    m_open.push_back({identity(name), file.name()});
+    const pugi::xml_node root = file.document().document_element();
+    if (std::string(root.name()) != "world") {
+        file.fail(root, "the root element is " + tag(root) + "; a crowd world file holds one <world> element");
+    }
+    for (pugi::xml_node other = root.next_sibling(); other; other = other.next_sibling()) {
+        if (other.type() == pugi::node_element) file.fail(other, "a second root element " + tag(other) + " after <world>");
+    }
+    readWorld(file, root);
+    checkNames();
+    return std::move(m_world);
+}
+
+void Loader::readWorld(const XmlFile& file, pugi::xml_node world) {
+    checkAttributes(file, world, {"seed", "step"});
+    m_world.seed = static_cast<std::uint32_t>(wholeNumber(file, world, "seed", 1, 0, 0xFFFFFFFFll));
+    m_world.step = number(file, world, "step", 1.0f / 30.0f, Range::Step);
+    bool ground = false;
+    std::int64_t agents = 0, samples = 0;
+    for (pugi::xml_node node : childElements(file, world)) {
+        const std::string name = node.name();
+        if (name == "include" || name == "type" || name == "behaviour") {
+            readAgentsChild(file, node, 0);
+        } else if (name == "ground") {
+            if (ground) file.fail(node, "a second <ground>; a world has exactly one");
+            readGround(file, node);
+            ground = true;
+        } else if (name == "base") {
+            checkLeaf(file, node, {"x", "z", "radius"});
+            Base base;
+            base.position = {number(file, node, "x", std::nullopt, Range::Finite), number(file, node, "z", std::nullopt, Range::Finite)};
+            base.radius = number(file, node, "radius", 1.5f, Range::Positive);
+            base.line = file.line(node);
+            m_world.bases.push_back(base);
+        } else if (name == "samples") {
+            checkLeaf(file, node, {"count", "x", "z", "radius"});
+            SampleArea area;
+            area.count = static_cast<int>(wholeNumber(file, node, "count", std::nullopt, 0, CrowdXmlLimits::maxSamples));
+            area.centre = {number(file, node, "x", std::nullopt, Range::Finite), number(file, node, "z", std::nullopt, Range::Finite)};
+            area.radius = number(file, node, "radius", 1.0f, Range::NonNegative);
+            area.line = file.line(node);
+            samples += area.count;
+            if (samples > CrowdXmlLimits::maxSamples) {
+                file.fail(node, "the <samples> elements place " + std::to_string(samples) + " samples in all; at most " +
+                                    std::to_string(CrowdXmlLimits::maxSamples) + " are allowed");
+            }
+            m_world.samples.push_back(area);
+        } else if (name == "spawn") {
+            checkLeaf(file, node, {"type", "count", "x", "z", "radius", "team"});
+            SpawnArea spawn;
+            spawn.type = requiredText(file, node, "type");
+            spawn.count = static_cast<int>(wholeNumber(file, node, "count", std::nullopt, 0, CrowdXmlLimits::maxAgents));
+            spawn.centre = {number(file, node, "x", std::nullopt, Range::Finite), number(file, node, "z", std::nullopt, Range::Finite)};
+            spawn.radius = number(file, node, "radius", 1.0f, Range::NonNegative);
+            spawn.team = static_cast<int>(wholeNumber(file, node, "team", 0, 0, std::numeric_limits<int>::max()));
+            spawn.line = file.line(node);
+            agents += spawn.count;
+            if (agents > CrowdXmlLimits::maxAgents) {
+                file.fail(node, "the <spawn> elements place " + std::to_string(agents) + " agents in all; at most " +
+                                    std::to_string(CrowdXmlLimits::maxAgents) + " are allowed");
+            }
+            m_world.spawns.push_back(spawn);
+        } else {
+            file.fail(node, "unknown element " + tag(node) +
+                                " in <world>; expected one of: include, type, behaviour, ground, base, samples, spawn");
+        }
+    }
+    if (!ground) file.fail(world, "the world has no <ground> element; it needs exactly one");
+    if (m_world.spawns.empty()) file.fail(world, "the world has no <spawn> element; it needs at least one");
+    for (SpawnArea& spawn : m_world.spawns) {
+        spawn.typeIndex = -1;  // set by checkNames(), once the included types are known
+        const int bases = static_cast<int>(m_world.bases.size());
+        if (bases == 0 && spawn.team != 0) {
+            throw InputError(file.name(), spawn.line, "<spawn> team=\"" + std::to_string(spawn.team) +
+                                                          "\", but the world has no <base>; without bases the team is 0");
+        }
+        if (bases > 0 && spawn.team >= bases) {
+            throw InputError(file.name(), spawn.line, "<spawn> team=\"" + std::to_string(spawn.team) +
+                                                          "\" names no base; the world has " + std::to_string(bases) +
+                                                          " (teams 0 to " + std::to_string(bases - 1) + ")");
+        }
+        m_typeReferences.push_back({spawn.type, file.name(), spawn.line, "<spawn>"});
+    }
+}
+
+void Loader::readGround(const XmlFile& file, pugi::xml_node node) {
+    checkLeaf(file, node, {"collision", "height", "min", "max", "height-min", "height-max", "scenery"});
+    GroundDescription& ground = m_world.ground;
+    ground.collisionMap = resolved(file, requiredText(file, node, "collision"));
+    const std::string height = node.attribute("height").value();
+    ground.heightMap = height.empty() ? fs::path() : resolved(file, height);
+    ground.footprintMin = coordinates(file, node, "min", glm::vec2(-15.0f));
+    ground.footprintMax = coordinates(file, node, "max", glm::vec2(15.0f));
+    if (!(ground.footprintMin.x < ground.footprintMax.x && ground.footprintMin.y < ground.footprintMax.y)) {
+        file.fail(node, "<ground> min must be less than max on both axes (x and z)");
+    }
+    ground.heightMin = number(file, node, "height-min", 0.0f, Range::Finite);
+    ground.heightMax = number(file, node, "height-max", 0.0f, Range::Finite);
+    if (ground.heightMax < ground.heightMin) file.fail(node, "<ground> height-max must be at least height-min");
+    ground.scenery = optionalText(file, node, "scenery", "none");
+    if (ground.scenery != "acropolis" && ground.scenery != "terrain" && ground.scenery != "none") {
+        file.fail(node, "<ground> scenery=\"" + quoteInput(ground.scenery) + "\" is unknown; expected one of: acropolis, terrain, none");
+    }
+    ground.line = file.line(node);
+}
+
+/// An element of <agents> (or the same elements directly in <world>).
+void Loader::readAgentsChild(const XmlFile& file, pugi::xml_node node, int depth) {
+    const std::string name = node.name();
+    if (name == "include") return readInclude(file, node, depth);
+    if (name == "type") return readType(file, node);
+    if (name == "behaviour") return readBehaviour(file, node);
+    file.fail(node, "unknown element " + tag(node) + " in <agents>; expected one of: include, type, behaviour");
+}
+
+void Loader::readInclude(const XmlFile& file, pugi::xml_node node, int depth) {
+    checkLeaf(file, node, {"file"});
+    const std::string written = requiredText(file, node, "file");
+    const fs::path path = resolved(file, written);
+    if (depth + 1 > CrowdXmlLimits::maxIncludeDepth) {
+        file.fail(node, "<include> nests deeper than " + std::to_string(CrowdXmlLimits::maxIncludeDepth) + " files");
+    }
+    const fs::path key = identity(path);
+    for (std::size_t i = 0; i < m_open.size(); ++i) {
+        if (m_open[i].identity != key) continue;
+        std::string chain;
+        for (std::size_t j = i; j < m_open.size(); ++j) chain += m_open[j].name + " -> ";
+        file.fail(node, "include loop: " + chain + path.string());
+    }
+    std::string text;
+    try {
+        text = readInputFile(path, CrowdXmlLimits::maxFileBytes, "crowd XML file");
+    } catch (const InputError& error) {
+        file.fail(node, "<include> file=\"" + quoteInput(written) + "\" cannot be read: " + error.message());
+    }
+    const XmlFile included(std::move(text), path);
+    const pugi::xml_node root = included.document().document_element();
+    if (std::string(root.name()) != "agents") {
+        included.fail(root, "the root element of an included file is " + tag(root) + "; expected <agents>");
+    }
+    for (pugi::xml_node other = root.next_sibling(); other; other = other.next_sibling()) {
+        if (other.type() == pugi::node_element) included.fail(other, "a second root element " + tag(other) + " after <agents>");
+    }
+    checkAttributes(included, root, {});
+    m_open.push_back({key, included.name()});
+    for (pugi::xml_node child : childElements(included, root)) readAgentsChild(included, child, depth + 1);
+    m_open.pop_back();
+}
+
+void Loader::readType(const XmlFile& file, pugi::xml_node node) {
+    checkLeaf(file, node, {"name", "model", "skin", "scale", "speed", "sight", "radius", "behaviour"});
+    AgentType type;
+    type.name = requiredText(file, node, "name");
+    type.model = resolved(file, requiredText(file, node, "model"));
+    type.skin = resolved(file, requiredText(file, node, "skin"));
+    type.scale = number(file, node, "scale", type.scale, Range::Positive);
+    type.speed = number(file, node, "speed", type.speed, Range::Positive);
+    type.sightRadius = number(file, node, "sight", type.sightRadius, Range::Positive);
+    type.radius = number(file, node, "radius", type.radius, Range::Positive);
+    type.behaviour = requiredText(file, node, "behaviour");
+    type.line = file.line(node);
+    const int earlier = m_world.findType(type.name);
+    if (earlier >= 0) {
+        file.fail(node, "the type '" + quoteInput(type.name) + "' is defined twice; the first is at " + m_typeFiles[earlier] +
+                            ":" + std::to_string(m_world.types[earlier].line));
+    }
+    m_world.types.push_back(type);
+    m_typeFiles.push_back(file.name());
+}
+
+void Loader::readBehaviour(const XmlFile& file, pugi::xml_node node) {
+    Behaviour behaviour;
+    behaviour.line = file.line(node);
+    const std::string kind = node.attribute("kind").value();
+    if (kind == "fsm") {
+        checkAttributes(file, node, {"name", "kind", "initial"});
+        behaviour.kind = Behaviour::Kind::StateMachine;
+    } else if (kind == "subsumption") {
+        checkAttributes(file, node, {"name", "kind"});
+        behaviour.kind = Behaviour::Kind::Subsumption;
+    } else {
+        requiredText(file, node, "kind");
+        file.fail(node, "<behaviour> kind=\"" + quoteInput(kind) + "\" is unknown; expected fsm or subsumption");
+    }
+    behaviour.name = requiredText(file, node, "name");
+    const int earlier = m_world.findBehaviour(behaviour.name);
+    if (earlier >= 0) {
+        file.fail(node, "the behaviour '" + quoteInput(behaviour.name) + "' is defined twice; the first is at " +
+                            m_behaviourFiles[earlier] + ":" + std::to_string(m_world.behaviours[earlier].line));
+    }
+    if (behaviour.kind == Behaviour::Kind::StateMachine) readStateMachine(file, node, behaviour);
+    else readSubsumption(file, node, behaviour);
+    m_world.behaviours.push_back(std::move(behaviour));
+    m_behaviourFiles.push_back(file.name());
+}
+
+void Loader::readStateMachine(const XmlFile& file, pugi::xml_node node, Behaviour& behaviour) {
+    std::vector<MachineState>& states = behaviour.machine.states;
+    std::vector<std::pair<pugi::xml_node, std::string>> targets;  // each transition's element and `to`
+    for (pugi::xml_node stateNode : childElements(file, node)) {
+        if (std::string(stateNode.name()) != "state") {
+            file.fail(stateNode, "unknown element " + tag(stateNode) + " in <behaviour kind=\"fsm\">; expected <state>");
+        }
+        checkAttributes(file, stateNode, {"name", "animation", "speed"});
+        MachineState state;
+        state.name = requiredText(file, stateNode, "name");
+        state.animation = optionalText(file, stateNode, "animation", "run");
+        state.speedScale = number(file, stateNode, "speed", 1.0f, Range::NonNegative);
+        state.line = file.line(stateNode);
+        for (const MachineState& other : states) {
+            if (other.name == state.name) {
+                file.fail(stateNode, "the state '" + quoteInput(state.name) + "' is defined twice in the behaviour '" +
+                                         quoteInput(behaviour.name) + "'; the first is at line " + std::to_string(other.line));
+            }
+        }
+        for (pugi::xml_node child : childElements(file, stateNode)) {
+            if (readAction(file, child, state.actions)) continue;
+            if (std::string(child.name()) != "transition") {
+                file.fail(child, "unknown element " + tag(child) + " in <state>; expected an action (wander, seek, flee, "
+                                 "follow-crumbs, pick-up, drop, drop-crumb, pick-up-crumb, stop, send, attack) or <transition>");
+            }
+            checkAttributes(file, child, {"to"});
+            Transition transition;
+            transition.line = file.line(child);
+            targets.emplace_back(child, requiredText(file, child, "to"));
+            for (pugi::xml_node condition : childElements(file, child)) transition.when.push_back(readCondition(file, condition));
+            state.transitions.push_back(std::move(transition));
+        }
+        states.push_back(std::move(state));
+    }
+    if (states.empty()) file.fail(node, "the behaviour '" + quoteInput(behaviour.name) + "' has no <state>; it needs at least one");
+    std::vector<std::string> names;
+    for (const MachineState& state : states) names.push_back(quoteInput(state.name));
+    const auto indexOf = [&](const std::string& name) {
+        for (std::size_t i = 0; i < states.size(); ++i) {
+            if (states[i].name == name) return static_cast<int>(i);
+        }
+        return -1;
+    };
+    std::size_t next = 0;
+    for (MachineState& state : states) {
+        for (Transition& transition : state.transitions) {
+            const auto& [element, to] = targets[next++];
+            transition.target = indexOf(to);
+            if (transition.target < 0) {
+                file.fail(element, "<transition> to=\"" + quoteInput(to) + "\" names no state of the behaviour '" +
+                                       quoteInput(behaviour.name) + "'; its states are: " + joined(names));
+            }
+        }
+    }
+    const std::string initial = optionalText(file, node, "initial", states[0].name);
+    behaviour.machine.initial = indexOf(initial);
+    if (behaviour.machine.initial < 0) {
+        file.fail(node, "<behaviour> initial=\"" + quoteInput(initial) + "\" names no state of the behaviour '" +
+                            quoteInput(behaviour.name) + "'; its states are: " + joined(names));
+    }
+}
+
+void Loader::readSubsumption(const XmlFile& file, pugi::xml_node node, Behaviour& behaviour) {
+    std::vector<Layer>& layers = behaviour.stack.layers;
+    for (pugi::xml_node layerNode : childElements(file, node)) {
+        if (std::string(layerNode.name()) != "layer") {
+            file.fail(layerNode, "unknown element " + tag(layerNode) + " in <behaviour kind=\"subsumption\">; expected <layer>");
+        }
+        checkAttributes(file, layerNode, {"name", "animation", "speed"});
+        Layer layer;
+        layer.name = requiredText(file, layerNode, "name");
+        layer.animation = optionalText(file, layerNode, "animation", "run");
+        layer.speedScale = number(file, layerNode, "speed", 1.0f, Range::NonNegative);
+        layer.line = file.line(layerNode);
+        for (const Layer& other : layers) {
+            if (other.name == layer.name) {
+                file.fail(layerNode, "the layer '" + quoteInput(layer.name) + "' is defined twice in the behaviour '" +
+                                         quoteInput(behaviour.name) + "'; the first is at line " + std::to_string(other.line));
+            }
+        }
+        bool when = false;
+        for (pugi::xml_node child : childElements(file, layerNode)) {
+            if (readAction(file, child, layer.actions)) continue;
+            if (std::string(child.name()) != "when") {
+                file.fail(child, "unknown element " + tag(child) + " in <layer>; expected <when> or an action (wander, seek, "
+                                 "flee, follow-crumbs, pick-up, drop, drop-crumb, pick-up-crumb, stop, send, attack)");
+            }
+            if (when) file.fail(child, "a second <when> in the layer '" + quoteInput(layer.name) + "'; a layer has at most one");
+            when = true;
+            checkAttributes(file, child, {});
+            for (pugi::xml_node condition : childElements(file, child)) layer.when.push_back(readCondition(file, condition));
+        }
+        layers.push_back(std::move(layer));
+    }
+    if (layers.empty()) file.fail(node, "the behaviour '" + quoteInput(behaviour.name) + "' has no <layer>; it needs at least one");
+}
+
+/// Reads `node` into `actions` when it is an action; false when it is not one.
+bool Loader::readAction(const XmlFile& file, pugi::xml_node node, std::vector<Action>& actions) {
+    const std::string name = node.name();
+    Action action;
+    action.line = file.line(node);
+    using Kind = Action::Kind;
+    if (name == "wander") {
+        checkLeaf(file, node, {"turn"});
+        action.kind = Kind::Wander;
+        action.value = number(file, node, "turn", 90.0f, Range::NonNegative);
+    } else if (name == "seek") {
+        checkLeaf(file, node, {"target"});
+        action.kind = Kind::Seek;
+        action.target = requiredText(file, node, "target");
+        if (action.target != "base" && action.target != "sample" && action.target != "crumb") useType(file, node, action.target);
+    } else if (name == "flee") {
+        checkLeaf(file, node, {"from"});
+        action.kind = Kind::Flee;
+        action.target = requiredText(file, node, "from");
+        useType(file, node, action.target);
+    } else if (name == "send") {
+        checkLeaf(file, node, {"message", "radius"});
+        action.kind = Kind::Send;
+        action.target = requiredText(file, node, "message");
+        action.value = number(file, node, "radius", 8.0f, Range::Positive);
+    } else if (name == "attack") {
+        checkLeaf(file, node, {"type"});
+        action.kind = Kind::Attack;
+        action.target = requiredText(file, node, "type");
+        useType(file, node, action.target);
+    } else {
+        static const std::pair<const char*, Kind> plain[] = {
+            {"follow-crumbs", Kind::FollowCrumbs}, {"pick-up", Kind::PickUp},   {"drop", Kind::Drop},
+            {"drop-crumb", Kind::DropCrumb},       {"pick-up-crumb", Kind::PickUpCrumb}, {"stop", Kind::Stop},
+        };
+        const auto found = std::find_if(std::begin(plain), std::end(plain), [&](const auto& p) { return name == p.first; });
+        if (found == std::end(plain)) return false;
+        checkLeaf(file, node, {});
+        action.kind = found->second;
+    }
+    actions.push_back(std::move(action));
+    return true;
+}
+
+Condition Loader::readCondition(const XmlFile& file, pugi::xml_node node) {
+    const std::string name = node.name();
+    using Kind = Condition::Kind;
+    if (name == "not") {
+        // <not> toggles: <not><not><carrying/></not></not> is <carrying/>.
+        checkAttributes(file, node, {});
+        const std::vector<pugi::xml_node> inner = childElements(file, node);
+        if (inner.size() != 1) {
+            file.fail(node, "<not> holds exactly one condition; found " + std::to_string(inner.size()));
+        }
+        Condition condition = readCondition(file, inner[0]);
+        condition.negated = !condition.negated;
+        return condition;
+    }
+    Condition condition;
+    condition.line = file.line(node);
+    if (name == "always") {
+        checkLeaf(file, node, {});
+        condition.kind = Kind::Always;
+    } else if (name == "sees") {
+        checkLeaf(file, node, {"type"});
+        condition.kind = Kind::Sees;
+        condition.type = requiredText(file, node, "type");
+        useType(file, node, condition.type);
+    } else if (name == "near") {
+        checkLeaf(file, node, {"type", "distance"});
+        condition.kind = Kind::Near;
+        condition.type = requiredText(file, node, "type");
+        condition.value = number(file, node, "distance", std::nullopt, Range::Positive);
+        useType(file, node, condition.type);
+    } else if (name == "carrying") {
+        checkLeaf(file, node, {});
+        condition.kind = Kind::Carrying;
+    } else if (name == "at-base") {
+        checkLeaf(file, node, {"distance"});
+        condition.kind = Kind::AtBase;
+        condition.value = number(file, node, "distance", 1.5f, Range::Positive);
+    } else if (name == "sees-sample") {
+        checkLeaf(file, node, {});
+        condition.kind = Kind::SeesSample;
+    } else if (name == "smells-crumb") {
+        checkLeaf(file, node, {});
+        condition.kind = Kind::SmellsCrumb;
+    } else if (name == "blocked") {
+        checkLeaf(file, node, {"ahead"});
+        condition.kind = Kind::Blocked;
+        condition.value = number(file, node, "ahead", 1.0f, Range::Positive);
+    } else if (name == "time-in-state") {
+        checkLeaf(file, node, {"seconds"});
+        condition.kind = Kind::TimeInState;
+        condition.value = number(file, node, "seconds", std::nullopt, Range::NonNegative);
+    } else if (name == "message") {
+        checkLeaf(file, node, {"name"});
+        condition.kind = Kind::Message;
+        condition.type = requiredText(file, node, "name");
+    } else if (name == "chance") {
+        checkLeaf(file, node, {"per-step"});
+        condition.kind = Kind::Chance;
+        condition.value = number(file, node, "per-step", std::nullopt, Range::UnitInterval);
+    } else {
+        file.fail(node, "unknown condition " + tag(node) + "; expected one of: always, sees, near, carrying, at-base, "
+                        "sees-sample, smells-crumb, blocked, time-in-state, message, chance, not");
+    }
+    return condition;
+}
+
+/// The names that may be defined in any file: each type's behaviour and every use of a type.
+void Loader::checkNames() {
+    std::vector<std::string> behaviours, types;
+    for (const Behaviour& behaviour : m_world.behaviours) behaviours.push_back(quoteInput(behaviour.name));
+    for (const AgentType& type : m_world.types) types.push_back(quoteInput(type.name));
+    for (std::size_t i = 0; i < m_world.types.size(); ++i) {
+        AgentType& type = m_world.types[i];
+        type.behaviourIndex = m_world.findBehaviour(type.behaviour);
+        if (type.behaviourIndex < 0) {
+            throw InputError(m_typeFiles[i], type.line, "the type '" + quoteInput(type.name) + "' has behaviour=\"" +
+                                                            quoteInput(type.behaviour) + "\", which is not defined; behaviours: " +
+                                                            joined(behaviours));
+        }
+    }
+    for (const TypeReference& reference : m_typeReferences) {
+        if (m_world.findType(reference.name) < 0) {
+            throw InputError(reference.file, reference.line, reference.user + " names the type '" + quoteInput(reference.name) +
+                                                                 "', which is not defined; types: " + joined(types));
+        }
+    }
+    for (SpawnArea& spawn : m_world.spawns) spawn.typeIndex = m_world.findType(spawn.type);
+}
+
+} // namespace
+
+CrowdWorld loadCrowdWorld(const fs::path& path) {
+    return Loader().read(readInputFile(path, CrowdXmlLimits::maxFileBytes, "crowd XML file"), path);
+}
+
+CrowdWorld parseCrowdWorld(const std::string& text, const fs::path& name) {
+    return Loader().read(text, name);
+}
+
+} // namespace stoa
