@@ -1,0 +1,94 @@
+#pragma once
+// Lab 10's exercises, declared for the simulation, the renderer and the tests
+// (the definitions are the student's: labs/10_crowds/behaviour.cpp, ground.cpp,
+// md2_blend.cpp; docs/labs/10_crowds.md explains each one):
+//
+//   behaviour.cpp   stepStateMachine   one step of a finite state machine
+//                   arbitrateLayers    which subsumption layer runs
+//   ground.cpp      walkableAt         the collision map at a point (x, z)
+//                   heightAt           the height map at a point, bilinear
+//   md2_blend.cpp   md2FramesAt        which two key frames a time falls between
+//                   blendMd2Frames     the pose between them
+//
+// CrowdSimulation and CrowdRenderer reach them through a CrowdLabCode, so a
+// program that does not draw crowds never needs lab 10's code.
+
+#include <stoa/crowd/CrowdWorld.hpp>
+#include <stoa/crowd/GroundMaps.hpp>
+#include <stoa/geometry/Md2Model.hpp>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace stoa {
+
+/// What an agent senses this step: the simulation's answer to a Condition,
+/// `negated` already applied (a <not> test is true when the test fails).
+class CrowdSenses {
+public:
+    virtual ~CrowdSenses() = default;
+    virtual bool holds(const Condition& condition) const = 0;
+};
+
+/// One step of a finite state machine for an agent in state `current`:
+/// the transitions of `machine.states[current]` are tried in their order and
+/// the first whose conditions all hold fires (an empty list always holds);
+/// the agent is then in that transition's target state, or still in `current`
+/// when none fires. `actions` is cleared and receives the actions of the
+/// state the agent is in after the transition, in their order. Returns that state.
+int stepStateMachine(const StateMachine& machine, int current, const CrowdSenses& senses,
+                     std::vector<const Action*>& actions);
+
+/// Subsumption: the index of the first layer of `stack` (the highest
+/// priority) whose conditions all hold (a layer without conditions always
+/// does); the layers below it are suppressed. -1 when none fires.
+int arbitrateLayers(const SubsumptionStack& stack, const CrowdSenses& senses);
+
+/// Whether the collision map lets an agent stand at `xz` (world x, z): the
+/// texel that holds the point decides; points outside the footprint are not walkable.
+bool walkableAt(const CollisionMap& map, glm::vec2 xz);
+
+/// The ground's height at `xz` in metres: the field's values are samples at
+/// the texel centres, read bilinearly between the four nearest (clamped to the
+/// edge texels outside them), then mapped to [heightMin, heightMax].
+float heightAt(const HeightField& field, glm::vec2 xz);
+
+/// Two key frames and how far between them: the pose is
+/// mix(frame[first], frame[second], t), t in [0, 1).
+struct Md2FramePair {
+    int first = 0;
+    int second = 0;
+    float t = 0.0f;
+};
+
+/// Where `seconds` falls in `animation` played at `framesPerSecond`, looping:
+/// frame k of the animation is shown at k / framesPerSecond seconds, and after
+/// its last frame it blends back into its first. Returned indices are into
+/// the model's frames (animation.first + k).
+Md2FramePair md2FramesAt(const Md2Animation& animation, float seconds, float framesPerSecond);
+
+/// The pose between two key frames of the same model: positions linearly,
+/// normals linearly and then normalized. `positions` and `normals` are resized.
+void blendMd2Frames(const Md2Frame& first, const Md2Frame& second, float t, std::vector<glm::vec3>& positions,
+                    std::vector<glm::vec3>& normals);
+
+struct CrowdLabCode {
+    int (*stepStateMachine)(const StateMachine&, int, const CrowdSenses&, std::vector<const Action*>&) = nullptr;
+    int (*arbitrateLayers)(const SubsumptionStack&, const CrowdSenses&) = nullptr;
+    bool (*walkableAt)(const CollisionMap&, glm::vec2) = nullptr;
+    float (*heightAt)(const HeightField&, glm::vec2) = nullptr;
+    Md2FramePair (*md2FramesAt)(const Md2Animation&, float, float) = nullptr;
+    void (*blendMd2Frames)(const Md2Frame&, const Md2Frame&, float, std::vector<glm::vec3>&,
+                           std::vector<glm::vec3>&) = nullptr;
+
+    /// The six as the calling program links them. Inline, so that only a
+    /// program that calls it needs lab 10's code.
+    static CrowdLabCode fromLab10() {
+        return {&stoa::stepStateMachine, &stoa::arbitrateLayers, &stoa::walkableAt,
+                &stoa::heightAt,         &stoa::md2FramesAt,     &stoa::blendMd2Frames};
+    }
+};
+
+} // namespace stoa
