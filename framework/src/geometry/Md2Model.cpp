@@ -146,65 +146,73 @@ std::string animationName(const std::string& frameName) {
 }
 
 // The normal table. Quake 2 stores a vertex normal as an index into 162
-// directions that cover the sphere about evenly: the corners of an
-// icosahedron whose triangles were each split into 16 (every edge into four)
-// and pushed out onto the unit sphere; 10 * 4^2 + 2 = 162. The order of id's
-// table (and the exact way its in-between corners were placed) is not
-// something that can be rebuilt from a rule, and its values are under the
-// GPL, so Stoa builds its own table the same way: the 12 corners of the
-// icosahedron, then the corners of two rounds of halving every edge (each new
-// corner the normalized midpoint of its edge), in the order they are made.
-// Only + - * / and sqrt are used (IEEE 754 rounds each exactly), so every
-// machine builds the same bits. Consequence: files written by encodeMd2()
-// round-trip exactly, but a third-party MD2 file's normal indices point into
-// id's order and decode to other directions; recompute such a model's
-// normals from its triangles (positions, texture coordinates and animations
-// are unaffected).
+// directions that cover the sphere about evenly: the corners of a geodesic
+// sphere of frequency 4, that is an icosahedron whose every flat triangle was
+// cut into 16 (each edge into four equal parts) and whose cut points were
+// pushed out onto the unit sphere; 10 * 4^2 + 2 = 162. Stoa builds that point
+// set here, with the icosahedron in the position whose corners are the cyclic
+// permutations of (+-1, 0, +-phi): the entries of id's table that are quoted
+// in public discussions of the format (-0.525731 0 0.850651, -0.442863
+// 0.238856 0.864188, -0.295242 0 0.955423, -0.309017 0.5 0.809017) are, to
+// their six decimals, the corner A = (-1, 0, phi), (3A + C) / 4, (3A + B) / 4
+// and (A + C) / 2 of its face A = (-1, 0, phi), B = (1, 0, phi), C = (0, phi, 1),
+// normalized. What cannot be rebuilt from a rule is the order of id's table
+// (its values are under the GPL and are not copied here), so Stoa's indices
+// follow its own order: the 12 corners, then the points on the 30 edges, then
+// those inside the 20 faces, as they are met. Only + - * / and sqrt are used
+// (IEEE 754 rounds each exactly), so every machine builds the same bits.
+// Consequence: files written by encodeMd2() round-trip exactly, but a
+// third-party MD2 file's normal indices count in id's order and decode to
+// other directions of the same set; recompute such a model's normals from its
+// triangles (positions, texture coordinates and animations are unaffected).
 std::array<glm::vec3, 162> buildNormalTable() {
     struct Point { double x, y, z; };
-    auto normalized = [](Point p) {
-        const double length = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
-        return Point{p.x / length, p.y / length, p.z / length};
-    };
     const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
-    // The icosahedron's corners: cyclic permutations of (0, +-1, +-phi).
-    std::vector<Point> corners = {
-        {-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0},
-        {0, -1, phi}, {0, 1, phi}, {0, -1, -phi}, {0, 1, -phi},
-        {phi, 0, -1}, {phi, 0, 1}, {-phi, 0, -1}, {-phi, 0, 1}};
-    for (Point& corner : corners) corner = normalized(corner);
-    // Its 20 faces, counter-clockwise seen from outside.
-    std::vector<std::array<int, 3>> faces = {
-        {0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4}, {11, 10, 2}, {10, 7, 6},
-        {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10},
-        {8, 6, 7}, {9, 8, 1}};
-    for (int round = 0; round < 2; ++round) {
-        std::map<std::pair<int, int>, int> middleOf;
-        auto middle = [&](int a, int b) {
-            const std::pair<int, int> edge(std::min(a, b), std::max(a, b));
-            const auto found = middleOf.find(edge);
-            if (found != middleOf.end()) return found->second;
-            const Point& p = corners[static_cast<std::size_t>(a)];
-            const Point& q = corners[static_cast<std::size_t>(b)];
-            corners.push_back(normalized({(p.x + q.x) / 2, (p.y + q.y) / 2, (p.z + q.z) / 2}));
-            const int index = static_cast<int>(corners.size()) - 1;
-            middleOf.emplace(edge, index);
-            return index;
-        };
-        std::vector<std::array<int, 3>> split;
-        for (const auto& [a, b, c] : faces) {
-            const int ab = middle(a, b), bc = middle(b, c), ca = middle(c, a);
-            split.push_back({a, ab, ca});
-            split.push_back({b, bc, ab});
-            split.push_back({c, ca, bc});
-            split.push_back({ab, bc, ca});
+    const Point corners[12] = {
+        {-1, 0, phi}, {1, 0, phi}, {-1, 0, -phi}, {1, 0, -phi},
+        {0, phi, 1}, {0, phi, -1}, {0, -phi, 1}, {0, -phi, -1},
+        {phi, 1, 0}, {-phi, 1, 0}, {phi, -1, 0}, {-phi, -1, 0}};
+    // The 20 faces: every three corners at the edge length (2) from each other.
+    std::vector<std::array<int, 3>> faces;
+    auto adjacent = [&](int a, int b) {
+        const double dx = corners[a].x - corners[b].x, dy = corners[a].y - corners[b].y, dz = corners[a].z - corners[b].z;
+        return std::abs(dx * dx + dy * dy + dz * dz - 4.0) < 1e-9;
+    };
+    for (int a = 0; a < 12; ++a)
+        for (int b = a + 1; b < 12; ++b)
+            for (int c = b + 1; c < 12; ++c)
+                if (adjacent(a, b) && adjacent(b, c) && adjacent(a, c)) faces.push_back({a, b, c});
+    // A point of a face is a weighting of its corners in quarters, (i A + j B + k C) / 4
+    // with i + j + k = 4; it is named by its nonzero (corner, weight) pairs, sorted, so that
+    // a point on an edge or at a corner is made once for all the faces that share it.
+    using Key = std::vector<std::pair<int, int>>;
+    std::map<Key, int> made;
+    std::vector<std::pair<int, Point>> points;   // (0 corner, 1 edge, 2 inside a face) and the direction
+    for (const auto& face : faces) {
+        for (int i = 0; i <= 4; ++i) {
+            for (int j = 0; i + j <= 4; ++j) {
+                const int weights[3] = {i, j, 4 - i - j};
+                Key key;
+                Point sum{0, 0, 0};
+                for (int corner = 0; corner < 3; ++corner) {
+                    if (weights[corner] == 0) continue;
+                    key.emplace_back(face[corner], weights[corner]);
+                    const Point& p = corners[face[corner]];
+                    sum = {sum.x + weights[corner] * p.x, sum.y + weights[corner] * p.y, sum.z + weights[corner] * p.z};
+                }
+                std::sort(key.begin(), key.end());
+                if (!made.emplace(key, 0).second) continue;
+                const double length = std::sqrt(sum.x * sum.x + sum.y * sum.y + sum.z * sum.z);
+                points.emplace_back(static_cast<int>(key.size()) - 1, Point{sum.x / length, sum.y / length, sum.z / length});
+            }
         }
-        faces = std::move(split);
     }
+    std::stable_sort(points.begin(), points.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
     std::array<glm::vec3, 162> table{};
-    for (std::size_t i = 0; i < table.size(); ++i)
-        table[i] = glm::vec3(static_cast<float>(corners[i].x), static_cast<float>(corners[i].y),
-                             static_cast<float>(corners[i].z));
+    for (std::size_t i = 0; i < table.size(); ++i) {
+        const Point& p = points.at(i).second;
+        table[i] = glm::vec3(static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z));
+    }
     return table;
 }
 

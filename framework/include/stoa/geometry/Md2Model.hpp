@@ -56,12 +56,13 @@ struct Md2Model {
 };
 
 /// The format's fixed table of 162 unit normals that a vertex's normal index
-/// points into: the corners of an icosahedron whose edges were halved twice,
-/// pushed out onto the unit sphere (10 * 4^2 + 2 = 162), built at start-up
-/// the same way on every machine. It is Stoa's own table, not id Software's:
-/// the same kind of directions in another order, so files written by
-/// encodeMd2() round-trip, but a third-party MD2 file's normals decode to other
-/// directions (recompute them from its triangles; Md2Model.cpp explains).
+/// points into: the corners of an icosahedron whose faces were cut into 16
+/// and pushed out onto the unit sphere (10 * 4^2 + 2 = 162), the same point
+/// set as id Software's table, built at start-up with the same bits on every
+/// machine. Its order is Stoa's own (id's cannot be rebuilt from a rule), so
+/// files written by encodeMd2() round-trip, but a third-party MD2 file's
+/// normals decode to other directions of the set: recompute them from its
+/// triangles (Md2Model.cpp explains).
 const std::array<glm::vec3, 162>& md2NormalTable();
 
 /// The table index of the normal closest to `normal` (the encoder's choice).
