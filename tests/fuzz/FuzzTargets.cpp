@@ -1,6 +1,7 @@
 #include "FuzzTargets.hpp"
 
 #include <stoa/core/InputError.hpp>
+#include <stoa/geometry/Md2Model.hpp>
 #include <stoa/geometry/ObjLoader.hpp>
 #include <stoa/image/HeightMap.hpp>
 #include <stoa/image/Image.hpp>
@@ -44,6 +45,30 @@ bool heightMap(const std::uint8_t* data, std::size_t size) {
     try {
         const Image height = decodeHeightMap(data, size, "fuzz-height-map", warnings);
         if (height.channels() != 1) __builtin_trap();
+        return true;
+    } catch (const InputError& error) {
+        (void)std::string(error.what());
+        return false;
+    }
+}
+
+bool md2(const std::uint8_t* data, std::size_t size) {
+    try {
+        const Md2Model model = decodeMd2(data, size, "fuzz-model.md2");
+        // Each decoded model keeps its promises: every frame has every vertex, every
+        // triangle indexes what exists, the animations cover the frames in order.
+        const std::size_t vertices = model.vertexCount();
+        for (const Md2Frame& frame : model.frames)
+            if (frame.positions.size() != vertices || frame.normals.size() != vertices) __builtin_trap();
+        for (const Md2Triangle& triangle : model.triangles)
+            for (int corner = 0; corner < 3; ++corner)
+                if (triangle.vertex[corner] >= vertices || triangle.texCoord[corner] >= model.texCoords.size()) __builtin_trap();
+        int next = 0;
+        for (const Md2Animation& animation : model.animations) {
+            if (animation.first != next || animation.count < 1) __builtin_trap();
+            next += animation.count;
+        }
+        if (next != static_cast<int>(model.frames.size())) __builtin_trap();
         return true;
     } catch (const InputError& error) {
         (void)std::string(error.what());

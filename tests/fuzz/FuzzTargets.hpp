@@ -18,6 +18,8 @@ bool obj(const std::uint8_t* data, std::size_t size);
 bool image(const std::uint8_t* data, std::size_t size);
 /// The same bytes as a height map.
 bool heightMap(const std::uint8_t* data, std::size_t size);
+/// A Quake 2 MD2 model, stoa::decodeMd2.
+bool md2(const std::uint8_t* data, std::size_t size);
 
 /// The separator line of obj() inputs.
 inline const std::string mtlSeparator = "\n#@mtl\n";

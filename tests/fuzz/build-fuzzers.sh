@@ -4,6 +4,7 @@
 #   fuzz-obj        OBJ text (+ MTL text after a line "#@mtl"), stoa::parseObj
 #   fuzz-image      any image file, stoa::Image::decode
 #   fuzz-heightmap  any image file, stoa::decodeHeightMap
+#   fuzz-md2        a Quake 2 MD2 model, stoa::decodeMd2
 # Usage: tests/fuzz/build-fuzzers.sh [OUT_DIR]   (default: build-fuzz)
 # stb_image is Debian's copy (/usr/include/stb), compiled here with the same
 # sanitizers so that undefined behaviour inside it is reported too.
@@ -21,6 +22,7 @@ sources=(
   framework/src/geometry/Mesh.cpp framework/src/geometry/ObjLoader.cpp framework/src/geometry/FaceTriangulation.cpp
   framework/src/image/Image.cpp framework/src/image/ImageFile.cpp framework/src/image/JpegCheck.cpp
   framework/src/image/HeightMap.cpp
+  framework/src/geometry/Md2Model.cpp
   tests/fuzz/FuzzTargets.cpp
 )
 objects=()
@@ -42,9 +44,9 @@ if [[ ! -f "$stb" ]]; then
   $cc $flags -w -c "$root/tests/fuzz/stb_image_impl.c" -o "$stb"
 fi
 for pid in "${pids[@]}"; do wait "$pid"; done
-for target in obj image heightmap; do
+for target in obj image heightmap md2; do
   echo "link fuzz-$target"
   $cxx -std=c++17 -O1 -g $sanitize -fsanitize=fuzzer "$root/tests/fuzz/fuzz_$target.cpp" -I"$root/framework/include" \
        "${objects[@]}" "$stb" -o "$out/fuzz-$target"
 done
-echo "fuzzers in $out: fuzz-obj fuzz-image fuzz-heightmap"
+echo "fuzzers in $out: fuzz-obj fuzz-image fuzz-heightmap fuzz-md2"

@@ -3,9 +3,9 @@
 
     tests/fuzz/make-regression-corpus.py OUT_DIR
 
-OUT_DIR/seeds/{obj,image}/       small valid files the fuzzers start from
-OUT_DIR/regression/{obj,image}/  every input that ever broke a loader (issue 14's
-                                 cases first), generated here rather than committed
+OUT_DIR/seeds/{obj,image,md2}/       small valid files the fuzzers start from
+OUT_DIR/regression/{obj,image,md2}/  every input that ever broke a loader (issue 14's
+                                     cases first), generated here rather than committed
 
 A regression file's name says what the loaders must do with it: "ok-..." must
 load, "err-..." must be refused with an InputError. The image files go to
@@ -13,7 +13,9 @@ both the image and the height-map entry points (a height map may refuse an
 image that loads, e.g. a 16-bit one, so only "err-" binds it). OBJ inputs carry
 their MTL text after a line "#@mtl" (see FuzzTargets.hpp). Findings of later
 fuzzing runs are added to the list at the end of this file, or, when small,
-copied to tests/fuzz/findings/{obj,image}/, which the replay also reads.
+copied to tests/fuzz/findings/{obj,image,md2}/, which the replay also reads. The
+MD2 files are written here with struct (md2() below), not by stoa::encodeMd2, so
+the loader is checked against a second writer of the format.
 """
 import math
 import os
@@ -246,6 +248,109 @@ def regression():
     return objs, images
 
 
+MD2_HEADER = "<17i"  # ident, version, skinwidth, skinheight, framesize, num_skins, num_vertices, num_st,
+                     # num_tris, num_glcmds, num_frames, ofs_skins, ofs_st, ofs_tris, ofs_frames, ofs_glcmds, ofs_end
+MD2_FIELDS = ("ident", "version", "skinwidth", "skinheight", "framesize", "num_skins", "num_vertices", "num_st",
+              "num_tris", "num_glcmds", "num_frames", "ofs_skins", "ofs_st", "ofs_tris", "ofs_frames", "ofs_glcmds",
+              "ofs_end")
+
+
+def md2(frames=("stand1", "stand2", "run1", "run2", "run3", "pain"), vertices=4, skin=(64, 32), glcmds=True, **patch):
+    """A small valid MD2 file (a tetrahedron whose vertices move from frame to frame), then
+    `patch`: header fields by name (num_frames=513), or frame_name_bytes / normal_index /
+    triangle_vertex / triangle_st / scale_y for the first spot of each."""
+    st = [(i * 9 + 1, i * 5 + 2) for i in range(6)]
+    tris = [((0, 2, 1), (0, 1, 2)), ((0, 1, 3), (1, 2, 3)), ((1, 2, 3), (2, 3, 4)), ((0, 3, 2), (3, 4, 5))]
+    skins = [b"models/test/skin.pcx"]
+    framesize = 40 + 4 * vertices
+    body_skins = b"".join(name.ljust(64, b"\0") for name in skins)
+    body_st = b"".join(struct.pack("<hh", s, t) for s, t in st)
+    body_tris = b"".join(struct.pack("<6H", *v, *t) for v, t in tris)
+    body_frames = b""
+    for index, name in enumerate(frames):
+        scale = (1 / 255, 1 / 255, 1 / 255)
+        if index == 0 and "scale_y" in patch:
+            scale = (scale[0], patch["scale_y"], scale[2])
+        name_bytes = patch["frame_name_bytes"] if index == 0 and "frame_name_bytes" in patch else name.encode().ljust(16, b"\0")
+        body_frames += struct.pack("<6f", *scale, 0.0, 0.1 * index, 0.0) + name_bytes
+        for v in range(vertices):
+            normal = patch["normal_index"] if index == 0 and v == 0 and "normal_index" in patch else (index * 7 + v * 31) % 162
+            body_frames += bytes(((v * 80 + index * 9) & 255, (v * 50) & 255, (v * 120 + index) & 255, normal))
+    if "triangle_vertex" in patch:
+        body_tris = struct.pack("<H", patch["triangle_vertex"]) + body_tris[2:]
+    if "triangle_st" in patch:
+        body_tris = body_tris[:6] + struct.pack("<H", patch["triangle_st"]) + body_tris[8:]
+    body_gl = struct.pack("<i", 0) if glcmds else b""
+    header = dict(ident=844121161, version=8, skinwidth=skin[0], skinheight=skin[1], framesize=framesize,
+                  num_skins=len(skins), num_vertices=vertices, num_st=len(st), num_tris=len(tris),
+                  num_glcmds=1 if glcmds else 0, num_frames=len(frames))
+    header["ofs_skins"] = 68
+    header["ofs_st"] = header["ofs_skins"] + len(body_skins)
+    header["ofs_tris"] = header["ofs_st"] + len(body_st)
+    header["ofs_frames"] = header["ofs_tris"] + len(body_tris)
+    header["ofs_glcmds"] = header["ofs_frames"] + len(body_frames)
+    header["ofs_end"] = header["ofs_glcmds"] + len(body_gl)
+    for name in MD2_FIELDS:
+        if name in patch:
+            header[name] = patch[name]
+    return struct.pack(MD2_HEADER, *(header[name] for name in MD2_FIELDS)) + body_skins + body_st + body_tris + \
+        body_frames + body_gl
+
+
+def md2_seeds():
+    return {
+        "tetrahedron.md2": md2(),
+        "one-frame.md2": md2(frames=("base",)),
+        "no-glcmds.md2": md2(glcmds=False),
+        "many-vertices.md2": md2(vertices=40),
+    }
+
+
+def md2_regression():
+    good = md2()
+    header = dict(zip(MD2_FIELDS, struct.unpack(MD2_HEADER, good[:68])))
+    cut = header["ofs_frames"] + 2 * header["framesize"] + 10
+    return {
+        "ok-frames-named-without-digits.md2": md2(frames=("stand", "walk", "walk", "pain")),
+        "ok-trailing-bytes-after-end.md2": good + b"trailing",
+        "err-empty.md2": b"",
+        "err-truncated-header.md2": good[:40],
+        "err-truncated-file.md2": good[:-10],
+        "err-truncated-frame-block.md2": md2(num_glcmds=0, ofs_end=cut)[:cut],
+        "err-magic-idp3.md2": b"IDP3" + good[4:],
+        "err-version-7.md2": md2(version=7),
+        "err-negative-vertices.md2": md2(num_vertices=-1),
+        "err-negative-frames-int-min.md2": md2(num_frames=-2147483648),
+        "err-negative-triangles.md2": md2(num_tris=-4),
+        "err-negative-glcmds.md2": md2(num_glcmds=-1),
+        "err-frames-513.md2": md2(num_frames=513),
+        "err-vertices-2049.md2": md2(num_vertices=2049, framesize=40 + 4 * 2049),
+        "err-skins-33.md2": md2(num_skins=33),
+        "err-zero-vertices.md2": md2(num_vertices=0, framesize=40),
+        "err-zero-frames.md2": md2(num_frames=0),
+        "err-st-offset-past-end.md2": md2(ofs_st=1000000000),
+        "err-tris-overlap-end.md2": md2(ofs_tris=len(good) - 20),
+        "err-skins-offset-negative.md2": md2(ofs_skins=-68),
+        "err-tris-offset-in-header.md2": md2(ofs_tris=8),
+        "err-frames-offset-int-max.md2": md2(ofs_frames=2147483647),
+        "err-glcmds-offset-int-max.md2": md2(ofs_glcmds=2147483647),
+        "err-end-past-file.md2": md2(ofs_end=2147483647),
+        "err-end-negative.md2": md2(ofs_end=-1),
+        "err-frame-size-mismatch.md2": md2(framesize=60),
+        "err-triangle-vertex-past-vertices.md2": md2(triangle_vertex=4),
+        "err-triangle-st-past-texcoords.md2": md2(triangle_st=6),
+        "err-normal-index-162.md2": md2(normal_index=162),
+        "err-normal-index-255.md2": md2(normal_index=255),
+        "err-skin-width-zero.md2": md2(skin=(0, 32)),
+        "err-skin-height-negative.md2": md2(skin=(64, -5)),
+        "err-scale-infinite.md2": md2(scale_y=float("inf")),
+        "err-scale-nan.md2": md2(scale_y=float("nan")),
+        "err-frame-name-without-nul.md2": md2(frame_name_bytes=b"a" * 16),
+        "err-frame-name-control-byte.md2": md2(frame_name_bytes=b"ru\nn1".ljust(16, b"\0")),
+        "err-frame-name-high-byte.md2": md2(frame_name_bytes=b"run\xff".ljust(16, b"\0")),
+    }
+
+
 def write(folder, files):
     os.makedirs(folder, exist_ok=True)
     for name, data in files.items():
@@ -262,10 +367,13 @@ def main():
     objs, images = seeds()
     write(os.path.join(out, "seeds", "obj"), objs)
     write(os.path.join(out, "seeds", "image"), images)
+    write(os.path.join(out, "seeds", "md2"), md2_seeds())
     objs, images = regression()
+    models = md2_regression()
     write(os.path.join(out, "regression", "obj"), objs)
     write(os.path.join(out, "regression", "image"), images)
-    count = sum(len(files) for files in (objs, images))
+    write(os.path.join(out, "regression", "md2"), models)
+    count = sum(len(files) for files in (objs, images, models))
     print("wrote %d regression files and the seeds to %s" % (count, out))
 
 

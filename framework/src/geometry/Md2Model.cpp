@@ -96,7 +96,8 @@ Header readHeader(const std::uint8_t* bytes) {
 void checkCount(const std::string& name, const char* what, std::int32_t count, int minimum, std::int64_t maximum) {
     if (count < 0)
         throw InputError(name, 0, "MD2 header gives a negative number of " + std::string(what) + " (" +
-                                      std::to_string(count) + "); expected 0 or more");
+                                      std::to_string(count) + "); expected " +
+                                      (minimum > 0 ? "at least " + std::to_string(minimum) : std::string("0 or more")));
     if (count < minimum)
         throw InputError(name, 0, "MD2 header gives " + std::to_string(count) + " " + what + "; a model needs at least " +
                                       std::to_string(minimum));
