@@ -1,6 +1,7 @@
 #include "FuzzTargets.hpp"
 
 #include <stoa/core/InputError.hpp>
+#include <stoa/crowd/CrowdXml.hpp>
 #include <stoa/geometry/Md2Model.hpp>
 #include <stoa/geometry/ObjLoader.hpp>
 #include <stoa/image/HeightMap.hpp>
@@ -69,6 +70,32 @@ bool md2(const std::uint8_t* data, std::size_t size) {
             next += animation.count;
         }
         if (next != static_cast<int>(model.frames.size())) __builtin_trap();
+        return true;
+    } catch (const InputError& error) {
+        (void)std::string(error.what());
+        return false;
+    }
+}
+
+bool crowdXml(const std::uint8_t* data, std::size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    try {
+        const CrowdWorld world = parseCrowdWorld(text, "/nonexistent-fuzz-folder/fuzz.xml");
+        // Each world read keeps its promises: every index the loader set points at something.
+        const auto within = [](int index, std::size_t count) { return index >= 0 && static_cast<std::size_t>(index) < count; };
+        for (const AgentType& type : world.types)
+            if (!within(type.behaviourIndex, world.behaviours.size())) __builtin_trap();
+        for (const SpawnArea& spawn : world.spawns)
+            if (!within(spawn.typeIndex, world.types.size()) || spawn.count < 0) __builtin_trap();
+        for (const Behaviour& behaviour : world.behaviours) {
+            const std::vector<MachineState>& states = behaviour.machine.states;
+            if (behaviour.kind == Behaviour::Kind::StateMachine && !within(behaviour.machine.initial, states.size()))
+                __builtin_trap();
+            for (const MachineState& state : states)
+                for (const Transition& transition : state.transitions)
+                    if (!within(transition.target, states.size())) __builtin_trap();
+        }
+        if (world.spawns.empty() || !(world.step > 0.0f && world.step <= 1.0f)) __builtin_trap();
         return true;
     } catch (const InputError& error) {
         (void)std::string(error.what());

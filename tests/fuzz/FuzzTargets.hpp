@@ -20,6 +20,9 @@ bool image(const std::uint8_t* data, std::size_t size);
 bool heightMap(const std::uint8_t* data, std::size_t size);
 /// A Quake 2 MD2 model, stoa::decodeMd2.
 bool md2(const std::uint8_t* data, std::size_t size);
+/// A crowd world's XML, stoa::parseCrowdWorld, named fuzz.xml in a folder
+/// that does not exist (so an <include> is refused, never read).
+bool crowdXml(const std::uint8_t* data, std::size_t size);
 
 /// The separator line of obj() inputs.
 inline const std::string mtlSeparator = "\n#@mtl\n";

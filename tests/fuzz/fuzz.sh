@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fuzzes each loader for a given time, one after the other, one process each.
-#   tests/fuzz/fuzz.sh [MINUTES_PER_LOADER] [obj|image|heightmap|md2 ...]
+#   tests/fuzz/fuzz.sh [MINUTES_PER_LOADER] [obj|image|heightmap|md2|crowd_xml ...]
 # Default: 10 minutes each for obj, image and heightmap. Builds the fuzzers
 # (build-fuzzers.sh) and the corpora (make-regression-corpus.py) in
 # $FUZZ_OUT (default build-fuzz), keeps each loader's growing corpus in

@@ -3,9 +3,9 @@
 
     tests/fuzz/make-regression-corpus.py OUT_DIR
 
-OUT_DIR/seeds/{obj,image,md2}/       small valid files the fuzzers start from
-OUT_DIR/regression/{obj,image,md2}/  every input that ever broke a loader (issue 14's
-                                     cases first), generated here rather than committed
+OUT_DIR/seeds/{obj,image,md2,crowd_xml}/       small valid files the fuzzers start from
+OUT_DIR/regression/{obj,image,md2,crowd_xml}/  every input that ever broke a loader (issue 14's
+                                               cases first), generated here rather than committed
 
 A regression file's name says what the loaders must do with it: "ok-..." must
 load, "err-..." must be refused with an InputError. The image files go to
@@ -15,7 +15,9 @@ their MTL text after a line "#@mtl" (see FuzzTargets.hpp). Findings of later
 fuzzing runs are added to the list at the end of this file, or, when small,
 copied to tests/fuzz/findings/{obj,image,md2}/, which the replay also reads. The
 MD2 files are written here with struct (md2() below), not by stoa::encodeMd2, so
-the loader is checked against a second writer of the format.
+the loader is checked against a second writer of the format. The crowd_xml
+files are whole world files without includes (tests/crowd/CrowdXmlTests.cpp
+checks the same mistakes with their lines).
 """
 import math
 import os
@@ -351,6 +353,125 @@ def md2_regression():
     }
 
 
+CROWD_EXPLORE = """  <type name="explorer" model="explorer.md2" skin="explorer.png" scale="0.05" speed="2" sight="6"
+        radius="0.5" behaviour="explore"/>
+  <behaviour name="explore" kind="fsm" initial="search">
+    <state name="home" animation="stand" speed="0">
+      <drop/><stop/>
+      <transition to="search"><time-in-state seconds="0.5"/></transition>
+    </state>
+    <state name="search">
+      <wander turn="45"/><follow-crumbs/>
+      <transition to="carry"><sees-sample/><not><carrying/></not></transition>
+      <transition to="flee"><near type="hunter" distance="2.5"/></transition>
+      <transition to="search"><blocked ahead="2"/><chance per-step="0.25"/></transition>
+    </state>
+    <state name="carry" speed="0.8">
+      <seek target="sample"/><pick-up/><seek target="base"/><drop-crumb/>
+      <transition to="home"><at-base distance="3"/><carrying/></transition>
+    </state>
+    <state name="flee">
+      <flee from="hunter"/><seek target="crumb"/><pick-up-crumb/>
+      <transition to="search"><not><sees type="hunter"/></not></transition>
+      <transition to="search"><message name="all-clear"/><smells-crumb/></transition>
+      <transition to="home"/>
+    </state>
+  </behaviour>
+"""
+CROWD_HUNT = """  <type name="hunter" model="hunter.md2" skin="hunter.png" behaviour="hunt"/>
+  <behaviour name="hunt" kind="subsumption">
+    <layer name="chase" animation="attack" speed="1.5">
+      <when><sees type="explorer"/><not><always/></not></when>
+      <seek target="explorer"/><attack type="explorer"/><send message="all-clear" radius="6"/>
+    </layer>
+    <layer name="roam"><wander/><send message="here"/></layer>
+  </behaviour>
+"""
+CROWD_PLACES = """  <ground collision="collision.png" height="height.png" min="-20 -10" max="20 10"
+          height-min="-1" height-max="3" scenery="terrain"/>
+  <base x="0" z="10" radius="2"/>
+  <base x="5" z="-5"/>
+  <samples count="40" x="0" z="-8" radius="6"/>
+  <spawn type="explorer" count="20" x="0" z="10" radius="2" team="1"/>
+  <spawn type="hunter" count="2" x="1" z="2"/>
+"""
+
+
+def crowd_world(inside="", places=CROWD_PLACES, attributes=' seed="7" step="0.05"'):
+    return "<world%s>\n%s%s%s%s</world>\n" % (attributes, CROWD_EXPLORE, CROWD_HUNT, places, inside)
+
+
+def crowd_xml_seeds():
+    return {
+        "explorers-and-hunters.xml": '<?xml version="1.0" encoding="UTF-8"?>\n<!-- lab 10 -->\n' + crowd_world(),
+        "small.xml": '<world><ground collision="c.png"/><type name="a" model="a.md2" skin="a.png" behaviour="b"/>'
+                     '<behaviour name="b" kind="fsm"><state name="s"><wander/></state></behaviour>'
+                     '<spawn type="a" count="3" x="0" z="0"/></world>',
+    }
+
+
+def crowd_xml_regression():
+    state = lambda inner: '<behaviour name="b" kind="fsm"><state name="s">%s</state></behaviour>\n' % inner
+    layer = lambda when: '<behaviour name="b" kind="subsumption"><layer name="l"><when>%s</when></layer></behaviour>\n' % when
+    return {
+        "ok-defaults.xml": crowd_world(attributes=""),
+        "ok-not-not.xml": crowd_world(layer("<not><not><carrying/></not></not>")),
+        "ok-crlf-and-bom.xml": "\ufeff" + crowd_world().replace("\n", "\r\n"),
+        "ok-doctype-skipped.xml": '<!DOCTYPE world [<!ENTITY e "x">]>\n' + crowd_world(),
+        "err-empty.xml": "",
+        "err-binary.xml": bytes(range(256)),
+        "err-malformed.xml": crowd_world().replace("</world>", "</wrold>"),
+        "err-unclosed-attribute.xml": '<world seed="1>\n',
+        "err-wrong-root.xml": "<agents/>\n",
+        "err-two-roots.xml": crowd_world() + "<world/>\n",
+        "err-unknown-element.xml": crowd_world('  <wall x="1"/>\n'),
+        "err-unknown-attribute.xml": crowd_world('  <base x="0" z="0" radus="2"/>\n'),
+        "err-unknown-condition.xml": crowd_world(layer("<hungry/>")),
+        "err-text-in-element.xml": crowd_world("  <base x=\"0\" z=\"0\">here</base>\n"),
+        "err-missing-attribute.xml": crowd_world('  <spawn count="3" x="0" z="0"/>\n'),
+        "err-speed-with-unit.xml": crowd_world('  <type name="t" model="m" skin="s" speed="1.5m" behaviour="hunt"/>\n'),
+        "err-nan.xml": crowd_world('  <base x="nan" z="0"/>\n'),
+        "err-inf.xml": crowd_world('  <base x="0" z="-inf"/>\n'),
+        "err-empty-number.xml": crowd_world('  <base x="" z="0"/>\n'),
+        "err-hex-number.xml": crowd_world(attributes=' step="0x1"'),
+        "err-step-underflows-to-0.xml": crowd_world(attributes=' step="1e-50"'),
+        "err-step-above-1.xml": crowd_world(attributes=' step="2"'),
+        "err-seed-past-32-bits.xml": crowd_world(attributes=' seed="4294967296"'),
+        "err-seed-negative.xml": crowd_world(attributes=' seed="-1"'),
+        "err-count-not-whole.xml": crowd_world('  <samples count="1.5" x="0" z="0"/>\n'),
+        "err-count-past-int64.xml": crowd_world('  <samples count="99999999999999999999999" x="0" z="0"/>\n'),
+        "err-chance-above-1.xml": crowd_world(layer('<chance per-step="1.5"/>')),
+        "err-min-not-pair.xml": crowd_world(places=CROWD_PLACES.replace('min="-20 -10"', 'min="1 2 3"')),
+        "err-min-equals-max.xml": crowd_world(places=CROWD_PLACES.replace('min="-20 -10"', 'min="20 -10"')),
+        "err-height-max-below-min.xml": crowd_world(places=CROWD_PLACES.replace('height-max="3"', 'height-max="-2"')),
+        "err-scenery-unknown.xml": crowd_world(places=CROWD_PLACES.replace("terrain", "forest")),
+        "err-no-ground.xml": crowd_world(places='  <spawn type="hunter" count="2" x="1" z="2"/>\n'),
+        "err-no-spawn.xml": crowd_world(places=CROWD_PLACES.split("  <spawn")[0]),
+        "err-two-grounds.xml": crowd_world('  <ground collision="d.png"/>\n'),
+        "err-unknown-state.xml": crowd_world(state('<transition to="sleep"/>')),
+        "err-unknown-initial.xml": crowd_world('<behaviour name="b" kind="fsm" initial="x"><state name="s"/></behaviour>\n'),
+        "err-no-states.xml": crowd_world('<behaviour name="b" kind="fsm"></behaviour>\n'),
+        "err-no-layers.xml": crowd_world('<behaviour name="b" kind="subsumption"/>\n'),
+        "err-unknown-kind.xml": crowd_world('<behaviour name="b" kind="bt"><state name="s"/></behaviour>\n'),
+        "err-not-two-conditions.xml": crowd_world(layer("<not><carrying/><always/></not>")),
+        "err-not-empty.xml": crowd_world(layer("<not/>")),
+        "err-two-whens.xml": crowd_world('<behaviour name="b" kind="subsumption"><layer name="l"><when/><when/></layer></behaviour>\n'),
+        "err-unknown-behaviour.xml": crowd_world('  <type name="t" model="m" skin="s" behaviour="dance"/>\n'),
+        "err-unknown-type-in-spawn.xml": crowd_world('  <spawn type="ghost" count="1" x="0" z="0"/>\n'),
+        "err-unknown-type-in-condition.xml": crowd_world(layer('<near type="ghost" distance="1"/>')),
+        "err-unknown-type-in-action.xml": crowd_world(state('<flee from="ghost"/>')),
+        "err-duplicate-type.xml": crowd_world('  <type name="hunter" model="m" skin="s" behaviour="hunt"/>\n'),
+        "err-duplicate-behaviour.xml": crowd_world('<behaviour name="hunt" kind="subsumption"><layer name="l"/></behaviour>\n'),
+        "err-duplicate-state.xml": crowd_world('<behaviour name="b" kind="fsm"><state name="s"/><state name="s"/></behaviour>\n'),
+        "err-duplicate-attribute.xml": crowd_world('  <base x="0" x="1" z="0"/>\n'),
+        "err-team-without-base.xml": crowd_world(places=CROWD_PLACES.replace('  <base x="5" z="-5"/>\n', "")),
+        "err-include-missing.xml": crowd_world('  <include file="missing.xml"/>\n'),
+        "err-include-itself.xml": crowd_world('  <include file="fuzz.xml"/>\n'),
+        "err-too-many-agents.xml": crowd_world('  <spawn type="hunter" count="999990" x="0" z="0"/>\n'),
+        "err-too-many-samples.xml": crowd_world('  <samples count="99970" x="0" z="0"/>\n'),
+    }
+
+
 def write(folder, files):
     os.makedirs(folder, exist_ok=True)
     for name, data in files.items():
@@ -368,12 +489,15 @@ def main():
     write(os.path.join(out, "seeds", "obj"), objs)
     write(os.path.join(out, "seeds", "image"), images)
     write(os.path.join(out, "seeds", "md2"), md2_seeds())
+    write(os.path.join(out, "seeds", "crowd_xml"), crowd_xml_seeds())
     objs, images = regression()
     models = md2_regression()
     write(os.path.join(out, "regression", "obj"), objs)
     write(os.path.join(out, "regression", "image"), images)
     write(os.path.join(out, "regression", "md2"), models)
-    count = sum(len(files) for files in (objs, images, models))
+    worlds = crowd_xml_regression()
+    write(os.path.join(out, "regression", "crowd_xml"), worlds)
+    count = sum(len(files) for files in (objs, images, models, worlds))
     print("wrote %d regression files and the seeds to %s" % (count, out))
 
 

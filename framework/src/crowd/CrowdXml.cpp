@@ -56,7 +56,15 @@ public:
     const fs::path& folder() const { return m_folder; }
     const pugi::xml_document& document() const { return m_document; }
 
-    int line(pugi::xml_node node) const { return lineOfOffset(node.offset_debug()); }
+    /// The line of an element's name, or of the first character of text that is not white space.
+    int line(pugi::xml_node node) const {
+        int line = lineOfOffset(node.offset_debug());
+        if (node.type() == pugi::node_pcdata && line > 0) {
+            // Line ends in a value are single '\n's (parse_eol), so counting them counts lines.
+            for (const char* c = node.value(); *c == ' ' || *c == '\t' || *c == '\n' || *c == '\r'; ++c) line += *c == '\n';
+        }
+        return line;
+    }
 
     [[noreturn]] void fail(pugi::xml_node node, const std::string& message) const {
         throw InputError(m_name, line(node), message);
@@ -108,7 +116,10 @@ std::vector<pugi::xml_node> childElements(const XmlFile& file, pugi::xml_node no
         if (child.type() == pugi::node_element) {
             children.push_back(child);
         } else if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) {
-            file.fail(child, "unexpected text '" + quoteInput(child.value()) + "' in " + tag(node) +
+            const std::string text = child.value();
+            const std::size_t start = std::min(text.find_first_not_of(" \t\r\n"), text.size());
+            const std::size_t end = text.find_last_not_of(" \t\r\n") + 1;
+            file.fail(child, "unexpected text '" + quoteInput(text.substr(start, end > start ? end - start : 0)) + "' in " + tag(node) +
                                  "; the format keeps everything in attributes");
         }
     }
@@ -181,11 +192,13 @@ float number(const XmlFile& file, pugi::xml_node node, const char* name, std::op
     }
     const std::optional<double> value = parseNumber(attribute.value());
     if (!value) file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is not a number");
-    if (!inRange(*value, range)) {
+    // The range is checked on the float kept, so that step="1e-50" (0 as a float) is out of range.
+    const float kept = static_cast<float>(*value);
+    if (!inRange(kept, range)) {
         file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is out of range: it must be " +
                             describe(range));
     }
-    return static_cast<float>(*value);
+    return kept;
 }
 
 /// A whole number in [least, most].
