@@ -31,11 +31,14 @@ for target in "${targets[@]}"; do
   find "$out/corpus/regression/$kind" -type f -size -8k -exec cp -n {} "$out/work/$target/" \;
   if [[ -d "$root/tests/fuzz/findings/$kind" ]]; then cp -n "$root/tests/fuzz/findings/$kind"/* "$out/work/$target/" 2>/dev/null || true; fi
   echo "== fuzzing $target for $minutes min (log: $out/$target.log)"
+  # A text format's names (tests/fuzz/TARGET.dict) let mutations past "unknown element".
+  dict=()
+  [[ -f "$root/tests/fuzz/$target.dict" ]] && dict=("-dict=$root/tests/fuzz/$target.dict")
   # -fork=1: one worker process at a time, restarted after a finding, so that
   # one slow input does not end the run: on a shared machine (nice -n 19) a
   # run can stall past -timeout=1 for want of a CPU. Every timeout is then
   # replayed alone below; one that is slow again is a finding.
-  nice -n 19 "$out/fuzz-$target" "$out/work/$target" -fork=1 -ignore_timeouts=1 \
+  nice -n 19 "$out/fuzz-$target" "$out/work/$target" "${dict[@]}" -fork=1 -ignore_timeouts=1 \
        -max_total_time=$((minutes * 60)) -timeout=1 -rss_limit_mb="$rss_mb" -malloc_limit_mb="$rss_mb" \
        -max_len=8192 -print_final_stats=1 -artifact_prefix="$out/findings/$target/" >"$out/$target.log" 2>&1 || status=1
   grep -E '^#[0-9]+: cov:' "$out/$target.log" | tail -1 || true
