@@ -1,0 +1,40 @@
+// Lab 10, part 3: animating MD2 characters between their key frames. Read
+// docs/labs/10_crowds.md, "Key-frame animation", first.
+
+#include <stoa/crowd/CrowdLab.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace stoa {
+
+Md2FramePair md2FramesAt(const Md2Animation& animation, float seconds, float framesPerSecond) {
+    // Frames since the start, wrapped into one loop of the animation.
+    const float frames = seconds * framesPerSecond;
+    const float looped = frames - std::floor(frames / animation.count) * animation.count;
+    int k = static_cast<int>(std::floor(looped));
+    if (k >= animation.count) k = animation.count - 1;   // looped rounded up to count
+    Md2FramePair pair;
+    pair.first = animation.first + k;
+    pair.second = animation.first + (k + 1) % animation.count;   // the last frame blends into the first
+    pair.t = looped - static_cast<float>(k);
+    if (pair.t >= 1.0f) pair.t = 0.0f;
+    return pair;
+}
+
+void blendMd2Frames(const Md2Frame& first, const Md2Frame& second, float t, std::vector<glm::vec3>& positions,
+                    std::vector<glm::vec3>& normals) {
+    const std::size_t count = first.positions.size();
+    positions.resize(count);
+    normals.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        positions[i] = first.positions[i] + (second.positions[i] - first.positions[i]) * t;
+        // Two unit normals blended are shorter than one: normalize again.
+        const glm::vec3 n = first.normals[i] + (second.normals[i] - first.normals[i]) * t;
+        const float length = glm::length(n);
+        normals[i] = length > 0.0f ? n / length : first.normals[i];
+    }
+}
+
+} // namespace stoa
