@@ -525,3 +525,43 @@ TEST_CASE("Crowd XML: malformed worlds are refused with the file, the line and t
                     "count=\"100001\" on <samples> is out of range: it must be 0 to 100000");
     }
 }
+
+TEST_CASE("Crowd XML: a hostile file of 4 MB reads in linear time and memory", "[crowd][xml]") {
+    const std::string head = "<world><ground collision=\"c\"/><type name=\"a\" model=\"m\" skin=\"s\" behaviour=\"b\"/>"
+                             "<spawn type=\"a\" count=\"1\" x=\"0\" z=\"0\"/>\n";
+    SECTION("a behaviour of 75,000 states, each with a transition") {
+        std::string text = head + "<behaviour name=\"b\" kind=\"fsm\">";
+        const int states = 75000;
+        for (int i = 0; i < states; ++i) {
+            text += "<state name=\"s" + std::to_string(i) + "\"><transition to=\"s" + std::to_string(i * 7 % states) +
+                    "\"/></state>";
+        }
+        text += "</behaviour></world>";
+        const CrowdWorld world = parseCrowdWorld(text, "states.xml");
+        REQUIRE(world.behaviours[0].machine.states.size() == std::size_t(states));
+        CHECK(world.behaviours[0].machine.states[3].transitions[0].target == 21);
+    }
+    SECTION("370,000 nested <not> elements (a loop, not recursion: no stack overflow)") {
+        const int depth = 370000;
+        std::string text = head + "<behaviour name=\"b\" kind=\"subsumption\"><layer name=\"l\"><when>";
+        for (int i = 0; i < depth; ++i) text += "<not>";
+        text += "<carrying/>";
+        for (int i = 0; i < depth; ++i) text += "</not>";
+        text += "</when></layer></behaviour></world>";
+        REQUIRE(text.size() <= CrowdXmlLimits::maxFileBytes);
+        const CrowdWorld world = parseCrowdWorld(text, "nots.xml");
+        CHECK(world.behaviours[0].stack.layers[0].when[0].kind == Condition::Kind::Carrying);
+        CHECK(!world.behaviours[0].stack.layers[0].when[0].negated);  // an even number of <not>
+    }
+    SECTION("a message lists a dozen names, then how many more") {
+        std::string text = head + "<behaviour name=\"b\" kind=\"fsm\">";
+        for (int i = 0; i < 50; ++i) text += "<state name=\"s" + std::to_string(i) + "\"/>";
+        text += "<state name=\"x\"><transition to=\"nope\"/></state></behaviour></world>";
+        try {
+            (void)parseCrowdWorld(text, "names.xml");
+            FAIL("no InputError");
+        } catch (const InputError& error) {
+            CHECK(contains(error.message(), "its states are: s0, s1, s2, s3, s4, s5, s6, s7, s8, s9, s10, s11 and 39 more"));
+        }
+    }
+}
