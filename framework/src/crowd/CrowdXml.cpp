@@ -25,6 +25,9 @@
 // has been read. Names are found through hash maps, so that a hostile file of
 // 4 MB (a behaviour of 200,000 states) reads in linear time, and a list of
 // names in a message stops after a dozen. docs/crowds-xml.md describes the format.
+// The file is longer than most in the framework because it is the format's
+// one list of what is accepted: each element's reader is a few lines, and
+// splitting them across files would scatter that list.
 
 namespace stoa {
 
