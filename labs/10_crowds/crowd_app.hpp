@@ -106,7 +106,8 @@ public:
     }
 
     void render(glm::ivec2 size) override {
-        if (!m_renderer) m_renderer = std::make_unique<CrowdRenderer>(m_programs, *m_simulation);
+        if (!m_renderer && m_view != View::Maps)   // the maps need no models
+            m_renderer = std::make_unique<CrowdRenderer>(m_programs, *m_simulation);
         const float aspect = static_cast<float>(size.x) / static_cast<float>(std::max(size.y, 1));
         m_lastSize = size;
         switch (m_view) {
