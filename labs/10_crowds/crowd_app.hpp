@@ -13,6 +13,7 @@
 //                    md2FramesAt() and blendMd2Frames(), through the case's camera
 //            maps:   your heightAt() as grey and walkableAt() (red where blocked),
 //                    sampled at every pixel over the footprint
+//   region = x0 z0 x1 z1  maps: the part of the footprint shown (default: all of it)
 //   trails = on | off     the agents' trails (default: on in top view)
 //   shadows = on | off    (default on)
 //   type = NAME           pose: the agent type (default: the world's first)
@@ -84,38 +85,50 @@ public:
         if (!(m_poseTime >= 0.0f && m_poseTime <= 3600.0f)) spec.reject("time", "time must be in [0, 3600] seconds");
         m_poseAnimation = spec.getString("animation", std::string("run"));
         m_poseType = spec.getString("type", std::string(""));
+        m_region = glm::vec4(0.0f);
+        if (spec.has("region")) {
+            const std::vector<float> region = spec.getNumbers("region", 4, "the corners x0 z0 x1 z1 of the part shown");
+            m_region = glm::vec4(region[0], region[1], region[2], region[3]);
+            if (!(m_region.x < m_region.z && m_region.y < m_region.w))
+                spec.reject("region", "region needs x0 < x1 and z0 < z1");
+        }
         const std::filesystem::path world = resolveWorld(spec.getString("world"), spec);
         loadWorld(world, steps);
         if (!m_poseType.empty() && m_world.findType(m_poseType) < 0)
             spec.reject("type", "the world has no agent type '" + m_poseType + "'");
         m_selected = -1;
+        m_framesDrawn = 0;
         m_poseMesh.reset();
         m_mapsTexture.reset();
     }
 
-    /// Loads `world` (InputError on a bad file) and runs `steps` steps.
+    /// Loads `world` and its maps (InputError on a bad file); the agents are
+    /// placed and run `steps` steps when a view first needs them, so that the
+    /// pose and maps views run none of the behaviour code.
     void loadWorld(const std::filesystem::path& world, int steps) {
         m_world = loadCrowdWorld(world);
-        m_simulation = std::make_unique<CrowdSimulation>(m_world, loadGroundMaps(m_world.ground, m_world.file),
-                                                         CrowdLabCode::fromLab10());
+        m_maps = loadGroundMaps(m_world.ground, m_world.file);
+        m_steps = steps;
+        m_simulation.reset();
         m_renderer.reset();
-        if (steps > 0) {
-            m_simulation->advance(steps);
-        }
+        m_poseModel.reset();
         m_accumulated = 0.0f;
     }
 
     void render(glm::ivec2 size) override {
-        if (!m_renderer && m_view != View::Maps)   // the maps need no models
-            m_renderer = std::make_unique<CrowdRenderer>(m_programs, *m_simulation);
         const float aspect = static_cast<float>(size.x) / static_cast<float>(std::max(size.y, 1));
         m_lastSize = size;
+        ++m_framesDrawn;
         switch (m_view) {
         case View::Top:
-            m_lastView = CrowdView::topDown(m_simulation->maps().collision.grid, aspect);
+            simulation();
+            if (!m_renderer) m_renderer = std::make_unique<CrowdRenderer>(m_programs, *m_simulation);
+            m_lastView = CrowdView::topDown(m_maps.collision.grid, aspect);
             m_renderer->render(*m_simulation, m_lastView, size, drawOptions());
             break;
         case View::Camera:
+            simulation();
+            if (!m_renderer) m_renderer = std::make_unique<CrowdRenderer>(m_programs, *m_simulation);
             m_lastView = cameraView(aspect);
             m_renderer->render(*m_simulation, m_lastView, size, drawOptions());
             break;
@@ -124,11 +137,22 @@ public:
         }
     }
 
+    /// The crowd, placed and run the case's steps at the first call.
+    CrowdSimulation& simulation() {
+        if (!m_simulation) {
+            m_simulation = std::make_unique<CrowdSimulation>(m_world, m_maps, CrowdLabCode::fromLab10());
+            m_simulation->advance(m_steps);
+        }
+        return *m_simulation;
+    }
+
     Camera& activeCamera() override { return m_cameras.active(); }
     void toggleCamera() override { m_cameras.toggle(); }
 
     void update(float seconds) override {
-        if (m_paused || !m_simulation) return;
+        // The case's own state stays for the first two frames: --screenshot
+        // saves the second one (LabWindow), which must match the headless picture.
+        if (m_paused || !m_simulation || m_framesDrawn < 2) return;
         m_accumulated += seconds * m_speed;
         const float step = m_world.step;
         int steps = 0;
@@ -144,11 +168,11 @@ public:
         switch (key) {
         case ' ':
             m_paused = !m_paused;
-            std::printf("%s at %.2f s\n", m_paused ? "paused" : "running", m_simulation->seconds());
+            std::printf("%s at %.2f s\n", m_paused ? "paused" : "running", simulation().seconds());
             return true;
         case 'n':
             if (!m_paused) return false;
-            m_simulation->step();
+            simulation().step();
             std::printf("step %lld\n", m_simulation->stepCount());
             return true;
         case '+':
@@ -207,8 +231,6 @@ public:
 #endif
     }
 
-    const CrowdSimulation* simulation() const { return m_simulation.get(); }
-
 private:
     enum class View { Top, Camera, Pose, Maps };
 
@@ -240,7 +262,11 @@ private:
 
     void renderPose(glm::ivec2 size, float aspect) {
         const int type = m_poseType.empty() ? 0 : m_world.findType(m_poseType);
-        const Md2GpuModel& gpu = m_renderer->model(static_cast<std::size_t>(type));
+        if (!m_poseModel) {
+            const AgentType& agentType = m_world.types[static_cast<std::size_t>(type)];
+            m_poseModel = uploadMd2(agentType.model, agentType.skin, agentType.scale);
+        }
+        const Md2GpuModel& gpu = *m_poseModel;
         if (!m_poseMesh) {
             const Md2Animation* animation = gpu.model.findAnimation(m_poseAnimation);
             if (!animation) {
@@ -260,7 +286,7 @@ private:
         }
         const CrowdView view = cameraView(aspect);
         CrowdDrawOptions options = m_options;
-        const FrameBlock block = m_renderer->frameBlock(view, options);
+        const FrameBlock block = CrowdRenderer::frameBlock(view, options);
         m_poseFrame->update(block);
         m_poseFrame->bind();
         PassDescription pass = passInto(size);
@@ -286,22 +312,35 @@ private:
         if (!m_mapsTexture) {
             // The student's look-ups at every pixel's centre over the footprint,
             // +x to the right and +z down, like the maps' own images.
-            const GroundMaps& maps = m_simulation->maps();
+            const GroundMaps& maps = m_maps;
             const GroundGrid& grid = maps.collision.grid;
+            const bool zoomed = m_region != glm::vec4(0.0f);
+            const glm::vec2 corner0 = zoomed ? glm::vec2(m_region.x, m_region.y) : grid.footprintMin;
+            const glm::vec2 corner1 = zoomed ? glm::vec2(m_region.z, m_region.w) : grid.footprintMax;
             const CrowdLabCode code = CrowdLabCode::fromLab10();
-            const float low = maps.heights.heightMin, high = maps.heights.heightMax;
+            // Heights as grey over their range in the picture (a zoomed region
+            // spans a few decimetres, which the whole range would flatten).
+            std::vector<float> heights(static_cast<std::size_t>(size.x) * size.y);
+            std::vector<std::uint8_t> walkable(heights.size());
+            for (int y = 0; y < size.y; ++y) {
+                for (int x = 0; x < size.x; ++x) {
+                    const glm::vec2 xz = corner0 + (corner1 - corner0) * glm::vec2((x + 0.5f) / size.x, (y + 0.5f) / size.y);
+                    const std::size_t i = static_cast<std::size_t>(y) * size.x + x;
+                    heights[i] = code.heightAt(maps.heights, xz);
+                    walkable[i] = code.walkableAt(maps.collision, xz) ? 1 : 0;
+                }
+            }
+            const auto [lowest, highest] = std::minmax_element(heights.begin(), heights.end());
+            const float low = *lowest, range = *highest - *lowest;
             Image image(size.x, size.y, 3);
             for (int y = 0; y < size.y; ++y) {
                 for (int x = 0; x < size.x; ++x) {
-                    const glm::vec2 xz = grid.footprintMin + (grid.footprintMax - grid.footprintMin) *
-                                                                 glm::vec2((x + 0.5f) / size.x, (y + 0.5f) / size.y);
-                    const float h = code.heightAt(maps.heights, xz);
-                    const float grey = high > low ? std::clamp((h - low) / (high - low), 0.0f, 1.0f) : 0.5f;
-                    const bool walkable = code.walkableAt(maps.collision, xz);
+                    const std::size_t i = static_cast<std::size_t>(y) * size.x + x;
+                    const float grey = range > 1e-6f ? std::clamp((heights[i] - low) / range, 0.0f, 1.0f) : 0.5f;
                     const auto level = static_cast<std::uint8_t>(std::lround(40.0f + 200.0f * grey));
                     // Image rows run down from the top: row y shows z growing downwards.
-                    image.setPixel(x, y, walkable ? glm::u8vec4(level, level, level, 255)
-                                                  : glm::u8vec4(std::min(255, level + 60), level / 3, level / 3, 255));
+                    image.setPixel(x, y, walkable[i] ? glm::u8vec4(level, level, level, 255)
+                                                     : glm::u8vec4(std::min(255, level + 60), level / 3, level / 3, 255));
                 }
             }
             TextureOptions options;
@@ -363,7 +402,10 @@ private:
     const Program* m_imageProgram = nullptr;
     std::unique_ptr<TextureOverlay> m_overlay;
     CrowdWorld m_world;
-    std::unique_ptr<CrowdSimulation> m_simulation;
+    GroundMaps m_maps;
+    int m_steps = 0;
+    std::unique_ptr<CrowdSimulation> m_simulation;   // made when a view needs the agents
+    std::unique_ptr<Md2GpuModel> m_poseModel;
     std::unique_ptr<CrowdRenderer> m_renderer;
     std::unique_ptr<GpuMesh> m_poseMesh;
     std::unique_ptr<Texture2D> m_mapsTexture;
@@ -373,7 +415,9 @@ private:
     std::string m_poseType;
     std::string m_poseAnimation = "run";
     float m_poseTime = 0.0f;
+    glm::vec4 m_region{0.0f};   // maps: x0 z0 x1 z1, all zero for the whole footprint
     int m_selected = -1;
+    int m_framesDrawn = 0;   // since the case was loaded
     bool m_paused = false;
     float m_speed = 1.0f;
     float m_accumulated = 0.0f;

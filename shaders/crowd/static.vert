@@ -20,7 +20,7 @@ void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     vNormalWorld = uNormalMatrix * aNormal;
     vUv = aUv;
-    vTint = vec4(1.0);
+    vTint = vec4(0.0);   // no tint (md2.vert tints a selected agent)
     vShadowCoord = (uLightSpace * world).xyz;
     gl_Position = uProjection * uView * world;
 }

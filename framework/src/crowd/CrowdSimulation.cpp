@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace stoa {
@@ -164,10 +165,26 @@ glm::vec2 CrowdSimulation::randomWalkablePoint(glm::vec2 centre, float radius, s
         const glm::vec2 point = centre + distance * direction(angle);
         if (m_code.walkableAt(m_maps.collision, point)) return point;
     }
+    // Whose fault: the map's own texel at the centre says whether the world
+    // file put the area on blocked ground or the lab's walkableAt() is wrong.
+    char place[96];
+    std::snprintf(place, sizeof place, "(%.2f, %.2f)", centre.x, centre.y);
+    const CollisionMap& map = m_maps.collision;
+    const glm::vec2 texel = (centre - map.grid.footprintMin) / (map.grid.footprintMax - map.grid.footprintMin) *
+                            glm::vec2(map.grid.width, map.grid.height);
+    const int col = static_cast<int>(std::floor(texel.x)), row = static_cast<int>(std::floor(texel.y));
+    const bool mapWalkable = col >= 0 && row >= 0 && col < map.grid.width && row < map.grid.height &&
+                             map.walkable[static_cast<std::size_t>(row) * map.grid.width + col] != 0;
+    if (mapWalkable) {
+        throw InputError(m_world.file.string(), line,
+                         "walkableAt() said no to 200 points within " + std::to_string(radius).substr(0, 4) +
+                             " m of " + place + " for " + what + ", but the collision map's texel (" +
+                             std::to_string(col) + ", " + std::to_string(row) +
+                             ") there is white: check walkableAt() (docs/labs/10_crowds.md, \"From a point to a texel\")");
+    }
     throw InputError(m_world.file.string(), line,
-                     "found no walkable ground for " + what + " within " + std::to_string(radius) + " m of (" +
-                         std::to_string(centre.x) + ", " + std::to_string(centre.y) +
-                         ") in 200 tries; move the area onto white in the collision map");
+                     "found no walkable ground for " + what + " within " + std::to_string(radius).substr(0, 4) +
+                         " m of " + place + " in 200 tries; move the area onto white in the collision map");
 }
 
 void CrowdSimulation::placeSamples() {

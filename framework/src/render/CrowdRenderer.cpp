@@ -148,7 +148,7 @@ CrowdRenderer::CrowdRenderer(const CrowdPrograms& programs, const CrowdSimulatio
 
 CrowdRenderer::~CrowdRenderer() = default;
 
-FrameBlock CrowdRenderer::frameBlock(const CrowdView& view, const CrowdDrawOptions& options) const {
+FrameBlock CrowdRenderer::frameBlock(const CrowdView& view, const CrowdDrawOptions& options) {
     FrameBlock block{};
     block.view = view.view;
     block.projection = view.projection;

@@ -67,8 +67,8 @@ struct CrowdDrawOptions {
     float framesPerSecond = 8.0f; // of the MD2 animations
     int selected = -1;            // this agent drawn highlighted
     glm::vec3 sunDirection{-0.45f, -1.0f, -0.35f};   // towards the ground
-    glm::vec3 sunColor{1.0f, 0.95f, 0.85f};
-    glm::vec3 ambient{0.32f, 0.34f, 0.4f};
+    glm::vec3 sunColor{0.85f, 0.8f, 0.72f};
+    glm::vec3 ambient{0.36f, 0.38f, 0.44f};
     glm::vec3 sky{0.62f, 0.72f, 0.85f};
 };
 
@@ -103,8 +103,8 @@ public:
     /// The model of agent type i.
     const Md2GpuModel& model(std::size_t type) const { return *m_models[type]; }
 
-    /// Lights the block for `view` with `options`' sun (for callers that draw more).
-    FrameBlock frameBlock(const CrowdView& view, const CrowdDrawOptions& options) const;
+    /// The frame block of `view`, lit by `options`' sun and ambient light (for callers that draw more).
+    static FrameBlock frameBlock(const CrowdView& view, const CrowdDrawOptions& options);
 
 private:
     void renderShadowMap(const CrowdSimulation& simulation, const CrowdDrawOptions& options);
