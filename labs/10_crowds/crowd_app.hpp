@@ -124,7 +124,11 @@ public:
             simulation();
             if (!m_renderer) m_renderer = std::make_unique<CrowdRenderer>(m_programs, *m_simulation);
             m_lastView = CrowdView::topDown(m_maps.collision.grid, aspect);
-            m_renderer->render(*m_simulation, m_lastView, size, drawOptions());
+            {
+                CrowdDrawOptions options = drawOptions();
+                options.flatScenery = true;
+                m_renderer->render(*m_simulation, m_lastView, size, options);
+            }
             break;
         case View::Camera:
             simulation();

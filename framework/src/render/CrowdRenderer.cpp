@@ -7,6 +7,7 @@
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/StateCache.hpp>
+#include <stoa/image/Image.hpp>
 #include <stoa/scene/AcropolisScene.hpp>
 
 #include <glm/geometric.hpp>
@@ -133,6 +134,18 @@ CrowdRenderer::CrowdRenderer(const CrowdPrograms& programs, const CrowdSimulatio
     if (world.ground.scenery == "acropolis") {
         m_acropolis = std::make_unique<PieceDrawList>(acropolisPieces());
         m_sceneMax.y = std::max(m_sceneMax.y, 8.0f);
+        for (const DrawItem& item : m_acropolis->items()) {
+            glm::vec3 colour = item.material ? item.material->diffuse : glm::vec3(0.8f);
+            if (item.material && !item.material->diffuseMap.empty()) {
+                const Image texture = Image::load(item.material->diffuseMap, 3);
+                glm::dvec3 sum(0.0);
+                for (int y = 0; y < texture.height(); ++y)
+                    for (int x = 0; x < texture.width(); ++x) sum += glm::dvec3(glm::vec3(texture.pixel(x, y)));
+                // The mean of the texture's values, in the linear units the shader multiplies by.
+                colour *= glm::vec3(sum / (255.0 * texture.width() * texture.height()));
+            }
+            m_flatColours.push_back(colour);
+        }
     } else {
         m_terrain = std::make_unique<GpuMesh>(terrainMesh(simulation.maps().heights));
         m_terrainMaterial.diffuse = world.ground.scenery == "terrain" ? glm::vec3(0.62f, 0.45f, 0.3f) : glm::vec3(0.55f);
@@ -160,7 +173,7 @@ FrameBlock CrowdRenderer::frameBlock(const CrowdView& view, const CrowdDrawOptio
     return block;
 }
 
-void CrowdRenderer::drawScenery(const Program& program, bool depthOnly) {
+void CrowdRenderer::drawScenery(const Program& program, bool depthOnly, bool flat) {
     program.use();
     program.set("uLightSpace", m_lightSpace);
     if (m_terrain) {
@@ -173,10 +186,14 @@ void CrowdRenderer::drawScenery(const Program& program, bool depthOnly) {
         m_terrain->draw();
     }
     if (m_acropolis) {
-        for (const DrawItem& item : m_acropolis->items()) {
+        for (std::size_t i = 0; i < m_acropolis->items().size(); ++i) {
+            const DrawItem& item = m_acropolis->items()[i];
             program.set("uModel", item.model);
             program.set("uNormalMatrix", item.normalMatrix);
-            if (!depthOnly) {
+            if (!depthOnly && flat) {
+                program.set("uDiffuse", m_flatColours[i]);
+                program.set("uHasTexture", false);
+            } else if (!depthOnly) {
                 program.set("uDiffuse", item.material ? item.material->diffuse : glm::vec3(0.8f));
                 program.set("uHasTexture", item.diffuseMap != nullptr);
                 if (item.diffuseMap) item.diffuseMap->bind(kTextureUnit);
@@ -318,7 +335,7 @@ void CrowdRenderer::render(const CrowdSimulation& simulation, const CrowdView& v
         program->set("uShadowMap", kShadowUnit);
         program->set("uShadowBias", 0.0015f);
     }
-    drawScenery(*m_programs.scenery, false);
+    drawScenery(*m_programs.scenery, false, options.flatScenery);
     drawAgents(*m_programs.agents, simulation, options);
     if (options.markers) drawMarkers(simulation, view, options);
 }

@@ -64,6 +64,10 @@ struct CrowdDrawOptions {
     bool trails = false;
     bool markers = true;          // samples, crumbs, bases
     bool shadows = true;
+    /// The scenery in its textures' mean colours (the top view: a texture
+    /// shrunk 15 times is filtered differently by every driver, and averaged
+    /// it reads the same).
+    bool flatScenery = false;
     float framesPerSecond = 8.0f; // of the MD2 animations
     int selected = -1;            // this agent drawn highlighted
     glm::vec3 sunDirection{-0.45f, -1.0f, -0.35f};   // towards the ground
@@ -108,7 +112,7 @@ public:
 
 private:
     void renderShadowMap(const CrowdSimulation& simulation, const CrowdDrawOptions& options);
-    void drawScenery(const Program& program, bool depthOnly);
+    void drawScenery(const Program& program, bool depthOnly, bool flat = false);
     void drawAgents(const Program& program, const CrowdSimulation& simulation, const CrowdDrawOptions& options);
     void drawMarkers(const CrowdSimulation& simulation, const CrowdView& view, const CrowdDrawOptions& options);
 
@@ -116,6 +120,7 @@ private:
     FrameUniforms m_frame;
     std::vector<std::unique_ptr<Md2GpuModel>> m_models;
     std::unique_ptr<PieceDrawList> m_acropolis;
+    std::vector<glm::vec3> m_flatColours;   // per acropolis item: its diffuse colour times its texture's mean
     std::unique_ptr<GpuMesh> m_terrain;
     Material m_terrainMaterial;
     Framebuffer m_shadowMap;
