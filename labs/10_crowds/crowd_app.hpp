@@ -69,6 +69,12 @@ public:
         m_poseFrame = std::make_unique<FrameUniforms>();
     }
 
+    CrowdApp() {
+        m_hooks.stepAgents = [this](float seconds) { stepAgents(seconds); };
+    }
+    CrowdApp(const CrowdApp&) = delete;   // the hook holds `this`
+    CrowdApp& operator=(const CrowdApp&) = delete;
+
     void loadCase(const CaseSpec& spec) override {
         m_cameras.loadCase(spec);
         const std::string views[] = {"top", "camera", "pose", "maps"};
@@ -153,20 +159,9 @@ public:
     Camera& activeCamera() override { return m_cameras.active(); }
     void toggleCamera() override { m_cameras.toggle(); }
 
-    void update(float seconds) override {
-        // The case's own state stays for the first two frames: --screenshot
-        // saves the second one (LabWindow), which must match the headless picture.
-        if (m_paused || !m_simulation || m_framesDrawn < 2) return;
-        m_accumulated += seconds * m_speed;
-        const float step = m_world.step;
-        int steps = 0;
-        while (m_accumulated >= step && steps < 240) {
-            m_simulation->step();
-            m_accumulated -= step;
-            ++steps;
-        }
-        if (steps == 240) m_accumulated = 0.0f;   // too slow to keep up: drop the backlog
-    }
+    /// The window steps the crowd through the framework's agent hook
+    /// (LabHooks::stepAgents), at fixed steps of the window's clock.
+    const LabHooks* hooks() const override { return &m_hooks; }
 
     bool keyPressed(unsigned char key) override {
         switch (key) {
@@ -237,6 +232,21 @@ public:
 
 private:
     enum class View { Top, Camera, Pose, Maps };
+
+    void stepAgents(float seconds) {
+        // The case's own state stays for the first two frames: --screenshot
+        // saves the second one (LabWindow), which must match the headless picture.
+        if (m_paused || !m_simulation || m_framesDrawn < 2) return;
+        m_accumulated += seconds * m_speed;
+        const float step = m_world.step;
+        int steps = 0;
+        while (m_accumulated >= step && steps < 240) {
+            m_simulation->step();
+            m_accumulated -= step;
+            ++steps;
+        }
+        if (steps == 240) m_accumulated = 0.0f;   // too slow to keep up: drop the backlog
+    }
 
     static std::filesystem::path resolveWorld(const std::string& name, const CaseSpec& spec) {
         const std::filesystem::path path(name);
@@ -401,6 +411,7 @@ private:
         return text;
     }
 
+    LabHooks m_hooks;
     CameraRig m_cameras;
     CrowdPrograms m_programs;
     const Program* m_imageProgram = nullptr;
