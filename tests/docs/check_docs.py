@@ -15,6 +15,8 @@ Checks that the docs hold together with the code and the grader's galleries:
    `stoa-grade --update-references` from the measured runs; for a mistake that fails property
    checks only, its .mistake file), or says "every case" when it fails every picture case; and
    every planted mistake has its section.
+5. Every lab folder with a cases.ini has its page docs/labs/NN_name.md, and the page is in the
+   site's nav.
 
 Prints every problem with its file and line; exits 1 when there is any.
 """
@@ -205,6 +207,16 @@ for page in sorted((root / "docs" / "labs").glob("[0-9][0-9]_*.md")):
         check_section(section_start, section)
     for mistake in sorted(set(mistakes) - documented):
         problem(page, 0, f"the gallery's mistake {mistake} has no section under '## Common mistakes'")
+
+# 5. Every lab has its page, and the page is in the site's nav.
+nav = (root / "mkdocs.yml").read_text(encoding="utf-8") if (root / "mkdocs.yml").exists() else ""
+for manifest in sorted((root / "labs").glob("[0-9][0-9]_*/cases.ini")):
+    lab = manifest.parent.name
+    page = root / "docs" / "labs" / f"{lab}.md"
+    if not page.exists():
+        problem(manifest, 0, f"lab {lab} has no page docs/labs/{lab}.md")
+    elif f"labs/{lab}.md" not in nav:
+        problem(page, 0, f"docs/labs/{lab}.md is not in mkdocs.yml's nav")
 
 for line in problems:
     print(line)
