@@ -1,8 +1,7 @@
 // Lab 10: the ground maps (stoa/crowd/GroundMaps.hpp) from files written
 // here into a TempFolder, against the values the test put in them:
 //   - loadGroundMaps with an 8-bit grey PNG (walkable where grey >= 128,
-//     heights grey / 255), a 16-bit PGM (P5, maxval 65535; [!mayfail]: it is
-//     read byte-swapped, see that case) and a 16-bit grey
+//     heights grey / 255), a 16-bit PGM (P5, maxval 65535) and a 16-bit grey
 //     PNG (written by hand: stored deflate blocks, CRC-32 and Adler-32 here)
 //     for heights (grey / 65535, so 1 and 256 are told from 0 and 1 / 255), a
 //     colour collision map read as luminance (green walkable, red not: neither
@@ -171,18 +170,44 @@ TEST_CASE("Ground maps: an 8-bit grey PNG gives walkable texels and heights, row
     CHECK(maps.heights.heightMax == 4.5f);
 }
 
-// Known to fail: GroundMaps.cpp's readGrey() decodes a 16-bit PGM with
-// stbi_load_16_from_memory, and stb_image 2.27 (Debian 12's) copies the PNM's
-// big-endian samples into memory as they are: on a little-endian machine grey
-// 1 reads as 256, 32768 as 128 (and a maxval under 65535 is not scaled either).
-// Remove [!mayfail] once 16-bit PNMs are decoded by Stoa's own PNM reader.
-TEST_CASE("Ground maps: a 16-bit PGM height map keeps its 16 bits", "[crowd][ground][!mayfail]") {
+// A regression test: stb_image 2.27 (Debian 12's) copies a 16-bit PNM's
+// big-endian samples into memory as they are (on a little-endian machine grey
+// 1 read as 256) and does not scale by maxval; GroundMaps.cpp reads PGMs itself.
+TEST_CASE("Ground maps: a 16-bit PGM height map keeps its 16 bits", "[crowd][ground]") {
     const TempFolder folder("ground-maps");
     greyImage(2, 2, {255, 255, 255, 255}).savePng(folder / "white.png");
     folder.write("heights.pgm", pgm16(3, 2, kSixteen));
     const GroundMaps maps = loadGroundMaps(description(folder / "white.png", folder / "heights.pgm"), folder / "w.xml");
     checkSixteenBitValues(maps.heights);
     CHECK(maps.heights.grid.footprintMax == glm::vec2(9.0f, 8.0f));
+}
+
+TEST_CASE("Ground maps: a 16-bit PGM is scaled by its maxval, in binary and in text", "[crowd][ground]") {
+    const TempFolder folder("ground-maps");
+    greyImage(2, 2, {255, 255, 255, 255}).savePng(folder / "white.png");
+    // maxval 1000: samples 0, 250, 500, 1000 are heights 0, 1/4, 1/2 and 1.
+    std::string binary = "P5\n# a comment\n2 2\n1000\n";
+    for (const int v : {0, 250, 500, 1000}) {
+        binary += static_cast<char>(v >> 8);
+        binary += static_cast<char>(v & 0xFF);
+    }
+    folder.write("binary.pgm", binary);
+    folder.write("text.pgm", "P2\n2 2\n1000\n0 250\n500 1000\n");
+    for (const char* name : {"binary.pgm", "text.pgm"}) {
+        INFO(name);
+        const GroundMaps maps = loadGroundMaps(description(folder / "white.png", folder / name), folder / "w.xml");
+        CHECK(maps.heights.values == std::vector<float>{0.0f, 0.25f, 0.5f, 1.0f});
+    }
+    // A sample above maxval, and a file shorter than its header says.
+    std::string above = "P5\n1 1\n1000\n";
+    above += static_cast<char>(0x07);
+    above += static_cast<char>(0xD0);   // 2000
+    folder.write("above.pgm", above);
+    folder.write("short.pgm", "P5\n2 2\n1000\n\x01");
+    for (const char* name : {"above.pgm", "short.pgm"}) {
+        INFO(name);
+        CHECK_THROWS_AS(loadGroundMaps(description(folder / "white.png", folder / name), folder / "w.xml"), InputError);
+    }
 }
 
 TEST_CASE("Ground maps: a 16-bit grey PNG height map keeps its 16 bits", "[crowd][ground]") {

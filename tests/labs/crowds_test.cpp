@@ -695,7 +695,7 @@ TEST_CASE("Lab 10: md2FramesAt's indices are offset by animation.first", "[lab10
     }
 }
 
-TEST_CASE("Lab 10: md2FramesAt's t lies in [0, 1), also just below a loop's end", "[lab10][crowds]") {
+TEST_CASE("Lab 10: md2FramesAt's t is at least 0 and below 1, also just below a loop's end", "[lab10][crowds]") {
     const Md2Animation run{"run", 7, 6};
     for (int i = 0; i < 20000; ++i) requireValidPair(run, md2FramesAt(run, static_cast<float>(i) * 0.00731f, 8.0f));
     for (int loops = 1; loops < 2000; loops += 37) {

@@ -59,6 +59,12 @@ float portableAtan2(float y, float x) {
 
 glm::vec2 direction(float heading) { return {portableSin(heading), portableCos(heading)}; }
 
+std::string metres(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g m", static_cast<double>(value));
+    return text;
+}
+
 float distanceSquared(glm::vec2 a, glm::vec2 b) {
     const glm::vec2 d = a - b;
     return glm::dot(d, d);
@@ -177,14 +183,12 @@ glm::vec2 CrowdSimulation::randomWalkablePoint(glm::vec2 centre, float radius, s
                              map.walkable[static_cast<std::size_t>(row) * map.grid.width + col] != 0;
     if (mapWalkable) {
         throw InputError(m_world.file.string(), line,
-                         "walkableAt() said no to 200 points within " + std::to_string(radius).substr(0, 4) +
-                             " m of " + place + " for " + what + ", but the collision map's texel (" +
+                         "walkableAt() said no to 200 points within " + metres(radius) + " of " + place + " for " + what + ", but the collision map's texel (" +
                              std::to_string(col) + ", " + std::to_string(row) +
                              ") there is white: check walkableAt() (docs/labs/10_crowds.md, \"From a point to a texel\")");
     }
     throw InputError(m_world.file.string(), line,
-                     "found no walkable ground for " + what + " within " + std::to_string(radius).substr(0, 4) +
-                         " m of " + place + " in 200 tries; move the area onto white in the collision map");
+                     "found no walkable ground for " + what + " within " + metres(radius) + " of " + place + " in 200 tries; move the area onto white in the collision map");
 }
 
 void CrowdSimulation::placeSamples() {
@@ -441,10 +445,20 @@ void CrowdSimulation::step() {
                 agent.position = randomWalkablePoint(area.centre, area.radius,
                                                      static_cast<std::uint32_t>(i) * 7919u + static_cast<std::uint32_t>(m_step),
                                                      "an agent of type '" + area.type + "'", area.line);
+                // Back as at the start: standing on its new ground, in its first state.
                 agent.alive = true;
                 agent.timeInState = 0.0f;
+                agent.speed = 0.0f;
+                agent.y = m_code.heightAt(m_maps.heights, agent.position);
+                agent.animationTime = 0.0f;
                 const Behaviour& b = m_world.behaviours[static_cast<std::size_t>(m_world.types[static_cast<std::size_t>(agent.type)].behaviourIndex)];
-                if (b.kind == Behaviour::Kind::StateMachine) agent.state = b.machine.initial;
+                if (b.kind == Behaviour::Kind::StateMachine) {
+                    agent.state = b.machine.initial;
+                    agent.animation = b.machine.states[static_cast<std::size_t>(agent.state)].animation;
+                } else {
+                    agent.state = -1;
+                    agent.animation = "stand";
+                }
             }
             continue;
         }

@@ -32,8 +32,6 @@ glm::vec3 typeColour(std::size_t type) {
     return colours[type % (sizeof(colours) / sizeof(colours[0]))];
 }
 
-glm::mat3 normalMatrix(const glm::mat4& model) { return glm::transpose(glm::inverse(glm::mat3(model))); }
-
 /// The model matrix of an agent: stand at (x, y, z), turned to its heading (0 faces +z), scaled.
 glm::mat4 agentMatrix(const CrowdAgent& agent, float scale) {
     glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(agent.position.x, agent.y, agent.position.y));

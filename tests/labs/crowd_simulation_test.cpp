@@ -1,8 +1,9 @@
 // Lab 10: CrowdSimulation (stoa/crowd/CrowdSimulation.hpp) on the example
 // worlds (assets/crowds/mars_explorers.xml and predators_prey.xml) and on
-// small worlds written here. This program links stoa_core only, not the lab
-// code, so the simulation runs on a CrowdLabCode of small implementations
-// written below (correct ones, independent of solutions/10_crowds). Checked:
+// small worlds written here. The simulation runs on a CrowdLabCode of small
+// implementations written below (correct ones, independent of
+// solutions/10_crowds; being correct lab code, this file lives in tests/labs/,
+// which the student release leaves out). Checked:
 //   - the same world and seed give bit-identical agents, samples and crumbs
 //     after 500 steps in two runs; another seed gives other agents;
 //   - no living agent ever stands on a texel the collision map blocks (a
@@ -13,7 +14,7 @@
 //   - the wolves attack goats within 1,200 steps, and an attacked goat comes
 //     back after respawnSeconds (241 steps of 1/30 s), on walkable ground
 //     within its spawn area (the first comes back at step 1,208: 1,500 steps);
-//     [!mayfail]: at heightAt() of its new place (it is not: see that case);
+//     at heightAt() of its new place;
 //   - a state or layer index out of range from the lab code throws
 //     std::out_of_range naming the function (-1 from arbitrateLayers is fine);
 //   - a <spawn> or <samples> area without walkable ground throws InputError
@@ -266,12 +267,11 @@ TEST_CASE("Crowd: every living agent stands at heightAt(position) after each ste
     CHECK(highest - lowest > 0.5f);   // the hills are not flat under the herd
 }
 
-// Known to fail: CrowdSimulation::step() places a goat that comes back and
-// `continue`s before it sets agent.y, so for that one step it stands at the
-// height of the place it died (predators_prey: goat 30 dies at step 967 at
-// y 1.91 and comes back at step 1208 at y 1.91 where the ground is 5.79 m).
-// Remove [!mayfail] once step() sets y (and resets speed and the animation) there.
-TEST_CASE("Crowd: a goat that comes back stands at heightAt of its new place", "[crowd][simulation][!mayfail]") {
+// A regression test: step() once placed a goat that came back without setting
+// its y, so for that step it stood at the height of the place it died
+// (predators_prey: goat 30 dies at step 967 at y 1.91 and comes back at step
+// 1208, where the ground is 5.79 m).
+TEST_CASE("Crowd: a goat that comes back stands at heightAt of its new place", "[crowd][simulation]") {
     const Example e = example("predators_prey.xml");
     CrowdSimulation crowd(e.world, e.maps, testCode());
     int comebacks = 0;
