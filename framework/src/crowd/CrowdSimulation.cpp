@@ -30,7 +30,11 @@ std::uint32_t hash32(std::uint32_t x) {
 // that differs in its last bit sends an agent elsewhere a thousand steps later).
 // Accurate to about 1e-6, which is all a heading needs.
 float wrapAngle(float angle) {
-    const float turns = std::floor(angle * (0.5f / kPi) + 0.5f);
+    // floor() by a cast (the headings stay far inside int's range): without
+    // SSE4.1 std::floor is a call into libm, and this runs several times per agent.
+    const float t = angle * (0.5f / kPi) + 0.5f;
+    float turns = static_cast<float>(static_cast<int>(t));
+    if (turns > t) turns -= 1.0f;
     return angle - turns * (2.0f * kPi);   // [-pi, pi)
 }
 
@@ -86,9 +90,9 @@ private:
         switch (condition.kind) {
         case Condition::Kind::Always: return true;
         case Condition::Kind::Sees:
-            return m_crowd.nearestAgentOfType(m_index, m_crowd.m_world.findType(condition.type), type.sightRadius) >= 0;
+            return m_crowd.nearestAgentOfType(m_index, condition.index, type.sightRadius) >= 0;
         case Condition::Kind::Near:
-            return m_crowd.nearestAgentOfType(m_index, m_crowd.m_world.findType(condition.type), condition.value) >= 0;
+            return m_crowd.nearestAgentOfType(m_index, condition.index, condition.value) >= 0;
         case Condition::Kind::Carrying: return agent.carrying;
         case Condition::Kind::AtBase: {
             if (m_crowd.m_world.bases.empty()) return false;
@@ -103,10 +107,8 @@ private:
             return !m_crowd.m_code.walkableAt(m_crowd.m_maps.collision,
                                               agent.position + direction(agent.heading) * condition.value);
         case Condition::Kind::TimeInState: return agent.timeInState >= condition.value;
-        case Condition::Kind::Message: {
-            const int message = m_crowd.messageIndex(condition.type);
-            return message >= 0 && (agent.messages & (1u << message)) != 0;
-        }
+        case Condition::Kind::Message:
+            return condition.index >= 0 && (agent.messages & (1u << condition.index)) != 0;
         case Condition::Kind::Chance:
             return m_crowd.randomFor(m_index, static_cast<std::uint32_t>(condition.line) * 2u + 1u) < condition.value;
         }
@@ -133,6 +135,7 @@ CrowdSimulation::CrowdSimulation(const CrowdWorld& world, GroundMaps maps, Crowd
         }
         for (const Layer& layer : behaviour.stack.layers) collect(layer.actions, layer.when);
     }
+    resolveNames();
     if (m_messages.size() > 32) {
         throw InputError(m_world.file.string(), 0,
                          "the world's behaviours use " + std::to_string(m_messages.size()) +
@@ -148,6 +151,41 @@ CrowdSimulation::CrowdSimulation(const CrowdWorld& world, GroundMaps maps, Crowd
     placeAgents();
     m_trails.assign(m_agents.size() * trailLength, glm::vec2(0.0f));
     rebuildAgentGrid();
+}
+
+void CrowdSimulation::resolveNames() {
+    // Names become indices once, so that a step compares no strings.
+    const auto resolveCondition = [&](Condition& condition) {
+        if (condition.kind == Condition::Kind::Sees || condition.kind == Condition::Kind::Near)
+            condition.index = m_world.findType(condition.type);
+        else if (condition.kind == Condition::Kind::Message)
+            condition.index = messageIndex(condition.type);
+    };
+    const auto resolveAction = [&](Action& action) {
+        switch (action.kind) {
+        case Action::Kind::Seek:
+            action.index = action.target == "base"     ? Action::kSeekBase
+                           : action.target == "sample" ? Action::kSeekSample
+                           : action.target == "crumb"  ? Action::kSeekCrumb
+                                                       : m_world.findType(action.target);
+            break;
+        case Action::Kind::Flee:
+        case Action::Kind::Attack: action.index = m_world.findType(action.target); break;
+        case Action::Kind::Send: action.index = messageIndex(action.target); break;
+        default: break;
+        }
+    };
+    for (Behaviour& behaviour : m_world.behaviours) {
+        for (MachineState& state : behaviour.machine.states) {
+            for (Action& action : state.actions) resolveAction(action);
+            for (Transition& transition : state.transitions)
+                for (Condition& condition : transition.when) resolveCondition(condition);
+        }
+        for (Layer& layer : behaviour.stack.layers) {
+            for (Action& action : layer.actions) resolveAction(action);
+            for (Condition& condition : layer.when) resolveCondition(condition);
+        }
+    }
 }
 
 float CrowdSimulation::randomFor(std::size_t agent, std::uint32_t salt) const {
@@ -230,49 +268,60 @@ void CrowdSimulation::rebuildAgentGrid() {
     const glm::vec2 origin = m_maps.collision.grid.footprintMin;
     const std::size_t cells = static_cast<std::size_t>(m_cellsX) * m_cellsZ;
     m_cellStart.assign(cells + 1, 0);
-    std::vector<int> cellOf(m_agents.size(), -1);
+    m_cellOf.assign(m_agents.size(), -1);
     for (std::size_t i = 0; i < m_agents.size(); ++i) {
         if (!m_agents[i].alive) continue;
         const glm::vec2 p = (m_agents[i].position - origin) / m_cellSize;
         const int cx = std::clamp(static_cast<int>(std::floor(p.x)), 0, m_cellsX - 1);
         const int cz = std::clamp(static_cast<int>(std::floor(p.y)), 0, m_cellsZ - 1);
-        cellOf[i] = cz * m_cellsX + cx;
-        ++m_cellStart[static_cast<std::size_t>(cellOf[i]) + 1];
+        m_cellOf[i] = cz * m_cellsX + cx;
+        ++m_cellStart[static_cast<std::size_t>(m_cellOf[i]) + 1];
     }
     for (std::size_t c = 0; c < cells; ++c) m_cellStart[c + 1] += m_cellStart[c];
-    m_cellAgents.assign(static_cast<std::size_t>(m_cellStart[cells]), 0);
+    m_cellAgents.resize(static_cast<std::size_t>(m_cellStart[cells]));
     std::vector<int> fill(m_cellStart.begin(), m_cellStart.end() - 1);
-    for (std::size_t i = 0; i < m_agents.size(); ++i)
-        if (cellOf[i] >= 0) m_cellAgents[static_cast<std::size_t>(fill[static_cast<std::size_t>(cellOf[i])]++)] = static_cast<int>(i);
+    for (std::size_t i = 0; i < m_agents.size(); ++i) {
+        if (m_cellOf[i] < 0) continue;
+        m_cellAgents[static_cast<std::size_t>(fill[static_cast<std::size_t>(m_cellOf[i])]++)] =
+            GridEntry{m_agents[i].position, m_agents[i].type, static_cast<int>(i)};
+    }
 }
 
-int CrowdSimulation::nearestAgentOfType(std::size_t index, int type, float radius) const {
-    const CrowdAgent& self = m_agents[index];
+template <typename Visit>
+void CrowdSimulation::forEachNear(glm::vec2 from, float radius, Visit&& visit) const {
     const glm::vec2 origin = m_maps.collision.grid.footprintMin;
-    const glm::vec2 low = (self.position - radius - origin) / m_cellSize;
-    const glm::vec2 high = (self.position + radius - origin) / m_cellSize;
+    const glm::vec2 low = (from - radius - origin) / m_cellSize;
+    const glm::vec2 high = (from + radius - origin) / m_cellSize;
     const int x0 = std::clamp(static_cast<int>(std::floor(low.x)), 0, m_cellsX - 1);
     const int x1 = std::clamp(static_cast<int>(std::floor(high.x)), 0, m_cellsX - 1);
     const int z0 = std::clamp(static_cast<int>(std::floor(low.y)), 0, m_cellsZ - 1);
     const int z1 = std::clamp(static_cast<int>(std::floor(high.y)), 0, m_cellsZ - 1);
-    int best = -1;
-    float bestDistance = radius * radius;
+    const float r2 = radius * radius;
     for (int cz = z0; cz <= z1; ++cz) {
         for (int cx = x0; cx <= x1; ++cx) {
             const std::size_t cell = static_cast<std::size_t>(cz) * m_cellsX + cx;
             for (int k = m_cellStart[cell]; k < m_cellStart[cell + 1]; ++k) {
-                const int other = m_cellAgents[static_cast<std::size_t>(k)];
-                const CrowdAgent& agent = m_agents[static_cast<std::size_t>(other)];
-                if (static_cast<std::size_t>(other) == index || agent.type != type || !agent.alive) continue;
-                const float d = distanceSquared(agent.position, self.position);
-                // Ties go to the lower index, whatever order the cells are visited in.
-                if (d < bestDistance || (d == bestDistance && best >= 0 && other < best)) {
-                    best = other;
-                    bestDistance = d;
-                }
+                const GridEntry& entry = m_cellAgents[static_cast<std::size_t>(k)];
+                if (distanceSquared(entry.position, from) <= r2) visit(entry);
             }
         }
     }
+}
+
+int CrowdSimulation::nearestAgentOfType(std::size_t index, int type, float radius) const {
+    if (type < 0) return -1;
+    const glm::vec2 from = m_agents[index].position;
+    int best = -1;
+    float bestDistance = radius * radius;
+    forEachNear(from, radius, [&](const GridEntry& entry) {
+        if (entry.type != type || static_cast<std::size_t>(entry.agent) == index) return;
+        const float d = distanceSquared(entry.position, from);
+        // Ties go to the lower index, whatever order the cells are visited in.
+        if (d > bestDistance || (d == bestDistance && best >= 0 && entry.agent > best)) return;
+        if (!m_agents[static_cast<std::size_t>(entry.agent)].alive) return;   // attacked this step
+        best = entry.agent;
+        bestDistance = d;
+    });
     return best;
 }
 
@@ -309,19 +358,19 @@ void CrowdSimulation::runAction(std::size_t index, const Action& action, float s
     case Action::Kind::Seek: {
         int found = -1;
         glm::vec2 target{0.0f};
-        if (action.target == "base") {
+        if (action.index == Action::kSeekBase) {
             if (!m_world.bases.empty()) {
                 target = m_world.bases[static_cast<std::size_t>(agent.team)].position;
                 found = 0;
             }
-        } else if (action.target == "sample") {
+        } else if (action.index == Action::kSeekSample) {
             found = nearestPoint(m_samples, agent.position, type.sightRadius);
             if (found >= 0) target = m_samples[static_cast<std::size_t>(found)];
-        } else if (action.target == "crumb") {
+        } else if (action.index == Action::kSeekCrumb) {
             found = nearestPoint(m_crumbs, agent.position, type.sightRadius);
             if (found >= 0) target = m_crumbs[static_cast<std::size_t>(found)];
         } else {
-            found = nearestAgentOfType(index, m_world.findType(action.target), type.sightRadius);
+            found = nearestAgentOfType(index, action.index, type.sightRadius);
             if (found >= 0) target = m_agents[static_cast<std::size_t>(found)].position;
         }
         if (found >= 0) headTowards(agent, target);
@@ -329,7 +378,7 @@ void CrowdSimulation::runAction(std::size_t index, const Action& action, float s
         break;
     }
     case Action::Kind::Flee: {
-        const int found = nearestAgentOfType(index, m_world.findType(action.target), type.sightRadius);
+        const int found = nearestAgentOfType(index, action.index, type.sightRadius);
         if (found >= 0) headTowards(agent, 2.0f * agent.position - m_agents[static_cast<std::size_t>(found)].position);
         agent.speed = type.speed * speedScale;
         break;
@@ -385,16 +434,16 @@ void CrowdSimulation::runAction(std::size_t index, const Action& action, float s
     }
     case Action::Kind::Stop: agent.speed = 0.0f; break;
     case Action::Kind::Send: {
-        const int message = messageIndex(action.target);
-        const float r2 = action.value * action.value;
-        for (std::size_t i = 0; i < m_agents.size(); ++i) {
-            if (i != index && m_agents[i].alive && distanceSquared(m_agents[i].position, agent.position) <= r2)
-                m_agents[i].nextMessages |= 1u << message;
-        }
+        // Every living agent within the radius, found through the grid, hears it next step.
+        const std::uint32_t bit = 1u << action.index;
+        forEachNear(agent.position, action.value, [&](const GridEntry& entry) {
+            CrowdAgent& hearer = m_agents[static_cast<std::size_t>(entry.agent)];
+            if (static_cast<std::size_t>(entry.agent) != index && hearer.alive) hearer.nextMessages |= bit;
+        });
         break;
     }
     case Action::Kind::Attack: {
-        const int found = nearestAgentOfType(index, m_world.findType(action.target), pickReach);
+        const int found = nearestAgentOfType(index, action.index, pickReach);
         if (found >= 0) {
             CrowdAgent& victim = m_agents[static_cast<std::size_t>(found)];
             victim.alive = false;
@@ -430,12 +479,28 @@ void CrowdSimulation::move(std::size_t index) {
     agent.heading = wrapAngle(agent.heading + kPi);
 }
 
+void CrowdSimulation::prefetchMaps(glm::vec2 xz) const {
+    const auto texelOf = [&](const GroundGrid& grid) -> std::size_t {
+        const glm::vec2 t = (xz - grid.footprintMin) / (grid.footprintMax - grid.footprintMin) *
+                            glm::vec2(grid.width, grid.height);
+        const int col = std::clamp(static_cast<int>(t.x), 0, grid.width - 1);
+        const int row = std::clamp(static_cast<int>(t.y), 0, grid.height - 1);
+        return static_cast<std::size_t>(row) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(col);
+    };
+    __builtin_prefetch(m_maps.collision.walkable.data() + texelOf(m_maps.collision.grid));
+    const std::size_t height = texelOf(m_maps.heights.grid);
+    __builtin_prefetch(m_maps.heights.values.data() + height);
+    if (height + static_cast<std::size_t>(m_maps.heights.grid.width) < m_maps.heights.values.size())
+        __builtin_prefetch(m_maps.heights.values.data() + height + static_cast<std::size_t>(m_maps.heights.grid.width));
+}
+
 void CrowdSimulation::step() {
     const float dt = m_world.step;
     for (CrowdAgent& agent : m_agents) {
         agent.messages = agent.nextMessages;
         agent.nextMessages = 0;
     }
+    // The dead first, in index order: a comeback waits for the next step to act.
     for (std::size_t i = 0; i < m_agents.size(); ++i) {
         CrowdAgent& agent = m_agents[i];
         if (!agent.alive) {
@@ -460,13 +525,23 @@ void CrowdSimulation::step() {
                     agent.animation = "stand";
                 }
             }
-            continue;
         }
+    }
+    // Then the living, cell by cell in the grid's order (built after the last
+    // step): agents near each other in space are near each other in the loop,
+    // so the map texels and grid cells they read stay in the cache.
+    for (std::size_t k = 0; k < m_cellAgents.size(); ++k) {
+        // The texels an agent a few places on will read, on their way already.
+        if (k + kPrefetchAhead < m_cellAgents.size()) prefetchMaps(m_cellAgents[k + kPrefetchAhead].position);
+        const std::size_t i = static_cast<std::size_t>(m_cellAgents[k].agent);
+        CrowdAgent& agent = m_agents[i];
+        if (!agent.alive) continue;   // attacked earlier in this step
         const AgentType& type = m_world.types[static_cast<std::size_t>(agent.type)];
         const Behaviour& behaviour = m_world.behaviours[static_cast<std::size_t>(type.behaviourIndex)];
         const Senses senses(*this, i);
         float speedScale = 1.0f;
-        std::string animation = "stand";
+        static const std::string kStand = "stand";
+        const std::string* animation = &kStand;
         int state = -1;
         m_actions.clear();
         if (behaviour.kind == Behaviour::Kind::StateMachine) {
@@ -478,7 +553,7 @@ void CrowdSimulation::step() {
             }
             const MachineState& now = behaviour.machine.states[static_cast<std::size_t>(state)];
             speedScale = now.speedScale;
-            animation = now.animation;
+            animation = &now.animation;
         } else {
             state = m_code.arbitrateLayers(behaviour.stack, senses);
             if (state < -1 || state >= static_cast<int>(behaviour.stack.layers.size())) {
@@ -490,19 +565,23 @@ void CrowdSimulation::step() {
                 const Layer& layer = behaviour.stack.layers[static_cast<std::size_t>(state)];
                 for (const Action& action : layer.actions) m_actions.push_back(&action);
                 speedScale = layer.speedScale;
-                animation = layer.animation;
+                animation = &layer.animation;
             }
         }
-        if (state != agent.state) agent.timeInState = 0.0f;
-        agent.state = state;
-        if (animation != agent.animation) {
-            agent.animation = animation;
-            agent.animationTime = 0.0f;
+        if (state != agent.state) {
+            agent.timeInState = 0.0f;
+            agent.state = state;
+            if (*animation != agent.animation) {
+                agent.animation = *animation;
+                agent.animationTime = 0.0f;
+            }
         }
         agent.speed = 0.0f;
         for (const Action* action : m_actions) runAction(i, *action, speedScale);
+        const glm::vec2 before = agent.position;
         move(i);
-        agent.y = m_code.heightAt(m_maps.heights, agent.position);
+        // The ground only changes under an agent that moved.
+        if (agent.position != before) agent.y = m_code.heightAt(m_maps.heights, agent.position);
         agent.timeInState += dt;
         agent.animationTime += dt;
     }

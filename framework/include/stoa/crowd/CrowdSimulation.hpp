@@ -1,6 +1,7 @@
 #pragma once
 // A crowd of agents over a ground (lab 10), stepped at a fixed rate. Each step
-// every living agent, in order:
+// every living agent, cell by cell of a grid over the ground (seeing the others
+// where they stood when the step began):
 //   1. senses (CrowdSenses, answered lazily: only the conditions its behaviour asks);
 //   2. picks its actions: stepStateMachine() or arbitrateLayers() (the student's);
 //   3. runs them: they set where it heads and how fast, pick up, drop, attack, send;
@@ -37,7 +38,7 @@ struct CrowdAgent {
     int state = 0;                // the FSM state, or the layer that ran (-1: none)
     float timeInState = 0.0f;     // seconds
     float animationTime = 0.0f;   // seconds into the current animation
-    std::string animation = "stand";
+    std::string animation = "stand";   // the MD2 animation its state or layer plays
     bool carrying = false;
     bool alive = true;
     float deadFor = 0.0f;         // seconds since it was attacked (it comes back after respawnSeconds)
@@ -102,10 +103,24 @@ private:
     void placeSamples();
     glm::vec2 randomWalkablePoint(glm::vec2 centre, float radius, std::uint32_t salt, const std::string& what,
                                   int line);
+    /// An agent in the grid, where it stood when the step began.
+    struct GridEntry {
+        glm::vec2 position;
+        int type;
+        int agent;
+    };
+
+    static constexpr std::size_t kPrefetchAhead = 4;   // agents between a prefetch and its use
+
+    void resolveNames();
+    void prefetchMaps(glm::vec2 xz) const;
     void rebuildAgentGrid();
     void runAction(std::size_t index, const Action& action, float speedScale);
     void move(std::size_t index);
     int nearestAgentOfType(std::size_t index, int type, float radius) const;
+    /// Calls visit(entry) for every grid entry within `radius` of `from`.
+    template <typename Visit>
+    void forEachNear(glm::vec2 from, float radius, Visit&& visit) const;
     int nearestPoint(const std::vector<glm::vec2>& points, glm::vec2 from, float radius) const;
     void headTowards(CrowdAgent& agent, glm::vec2 target);
 
@@ -124,11 +139,14 @@ private:
     int m_blockedMoves = 0;
     std::vector<const Action*> m_actions;
 
-    // The agents bucketed in square cells, rebuilt each step.
+    // The living agents bucketed in square cells, rebuilt after each step:
+    // the senses see the others where they stood when the step began, and
+    // the step visits the living in this order.
     float m_cellSize = 4.0f;
     int m_cellsX = 1, m_cellsZ = 1;
     std::vector<int> m_cellStart;         // m_cellsX * m_cellsZ + 1 offsets into m_cellAgents
-    std::vector<int> m_cellAgents;
+    std::vector<GridEntry> m_cellAgents;
+    std::vector<int> m_cellOf;            // per agent, scratch of rebuildAgentGrid()
 };
 
 } // namespace stoa

@@ -37,8 +37,9 @@ struct Condition {
     Kind kind = Kind::Always;
     std::string type;       // Sees, Near: an agent type's name; Message: the message's name
     float value = 0.0f;     // Near, AtBase, Blocked, TimeInState, Chance (see above)
-    bool negated = false;   // <not-...>: holds when the test fails
+    bool negated = false;   // <not>: holds when the test fails
     int line = 0;
+    int index = -1;         // set by CrowdSimulation: the index of the type (Sees, Near) or message (Message) named
 };
 
 /// Something an agent does during a step, in the order its state or layer lists them.
@@ -60,6 +61,10 @@ struct Action {
     std::string target;
     float value = 0.0f;
     int line = 0;
+    /// Set by CrowdSimulation: the index of the type (Seek an agent, Flee,
+    /// Attack) or message (Send) named; Seek also kSeekBase, kSeekSample, kSeekCrumb.
+    int index = -1;
+    static constexpr int kSeekBase = -2, kSeekSample = -3, kSeekCrumb = -4;
 };
 
 /// A transition fires when every one of its conditions holds (an empty list always holds).
