@@ -102,6 +102,16 @@ public:
         loadWorld(world, steps);
         if (!m_poseType.empty() && m_world.findType(m_poseType) < 0)
             spec.reject("type", "the world has no agent type '" + m_poseType + "'");
+        if (m_view == View::Pose) {
+            const AgentType& type = m_world.types[static_cast<std::size_t>(m_poseType.empty() ? 0 : m_world.findType(m_poseType))];
+            const Md2Model model = loadMd2(type.model);
+            if (!model.findAnimation(m_poseAnimation)) {
+                std::string names;
+                for (const Md2Animation& animation : model.animations) names += (names.empty() ? "" : ", ") + animation.name;
+                spec.reject("animation", "the model of type '" + type.name + "' (" + type.model.filename().string() +
+                                             ") has no animation '" + m_poseAnimation + "'; it has: " + names);
+            }
+        }
         m_selected = -1;
         m_framesDrawn = 0;
         m_poseMesh.reset();
@@ -282,11 +292,7 @@ private:
         }
         const Md2GpuModel& gpu = *m_poseModel;
         if (!m_poseMesh) {
-            const Md2Animation* animation = gpu.model.findAnimation(m_poseAnimation);
-            if (!animation) {
-                throw InputError("", 0, "the model of type '" + m_world.types[static_cast<std::size_t>(type)].name +
-                                            "' has no animation '" + m_poseAnimation + "'");
-            }
+            const Md2Animation* animation = gpu.model.findAnimation(m_poseAnimation);   // loadCase() checked it
             const CrowdLabCode code = CrowdLabCode::fromLab10();
             const Md2FramePair frames = code.md2FramesAt(*animation, m_poseTime, m_options.framesPerSecond);
             if (frames.first < animation->first || frames.first >= animation->first + animation->count ||
