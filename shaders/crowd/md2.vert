@@ -29,7 +29,7 @@ void main() {
     vec4 world = aModel * vec4(position, 1.0);
     vNormalWorld = mat3(aModel) * normal;
     vUv = aUv;
-    vTint = aFrames.w > 0.5 ? vec4(1.0, 0.85, 0.3, 0.6) : vec4(1.0, 1.0, 1.0, 0.0);
+    vTint = aFrames.w > 0.5 ? vec4(0.2, 0.9, 1.0, 0.7) : vec4(1.0, 1.0, 1.0, 0.0);   // the selected agent in cyan
     vShadowCoord = (uLightSpace * world).xyz;
     gl_Position = uProjection * uView * world;
 }

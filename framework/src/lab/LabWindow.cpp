@@ -19,6 +19,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -88,8 +89,9 @@ public:
         if (!m_ui) m_ui = std::make_unique<ImGuiLayer>(size);
         m_ui->beginFrame();
         ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_Always);
-        ImGui::SetNextWindowSize(ImVec2(280.0f, 120.0f), ImGuiCond_Always);
-        ImGui::Begin("Stoa");
+        // At least 280 x 120, and as large as what the lab adds (drawUi()) needs.
+        ImGui::SetNextWindowSizeConstraints(ImVec2(280.0f, 120.0f), ImVec2(FLT_MAX, FLT_MAX));
+        ImGui::Begin("Stoa", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
         ImGui::Text("lab %s (%s)", m_info.name, m_info.track);
         ImGui::Text("case %s", m_pictures[m_caseIndex]->name.c_str());
         ImGui::Text("%.1f ms per frame", 1000.0f / std::max(ImGui::GetIO().Framerate, 1.0f));
