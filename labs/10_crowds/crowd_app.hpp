@@ -23,6 +23,8 @@
 // In the window: space pauses, n steps once while paused, + and - change the
 // speed, t shows the trails, v switches the view, a click on an agent selects it.
 
+#include "checks.hpp"
+
 #include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/InputError.hpp>
 #include <stoa/core/Paths.hpp>
@@ -168,6 +170,12 @@ public:
 
     Camera& activeCamera() override { return m_cameras.active(); }
     void toggleCamera() override { m_cameras.toggle(); }
+
+    CheckResult runCheck(const CaseSpec& spec) override {
+        if (spec.check == "heights_at_texel_centres") return lab10::checkHeightsAtTexelCentres();
+        if (spec.check == "blended_normals_unit") return lab10::checkBlendedNormalsUnit();
+        return Lab::runCheck(spec);
+    }
 
     /// The window steps the crowd through the framework's agent hook
     /// (LabHooks::stepAgents), at fixed steps of the window's clock.

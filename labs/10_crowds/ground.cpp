@@ -9,6 +9,7 @@
 
 #include <glm/common.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace stoa {

@@ -7,6 +7,7 @@
 
 #include <glm/common.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace stoa {

@@ -12,14 +12,13 @@ namespace stoa {
 Md2FramePair md2FramesAt(const Md2Animation& animation, float seconds, float framesPerSecond) {
     // Frames since the start, wrapped into one loop of the animation.
     const float frames = seconds * framesPerSecond;
-    const float looped = frames - std::floor(frames / animation.count) * animation.count;
-    int k = static_cast<int>(std::floor(looped));
-    if (k >= animation.count) k = animation.count - 1;   // looped rounded up to count
+    float looped = frames - std::floor(frames / animation.count) * animation.count;
+    if (looped >= animation.count) looped = 0.0f;   // rounded up to a whole loop: the next one starts
+    const int k = static_cast<int>(std::floor(looped));
     Md2FramePair pair;
     pair.first = animation.first + k;
     pair.second = animation.first + (k + 1) % animation.count;   // the last frame blends into the first
     pair.t = looped - static_cast<float>(k);
-    if (pair.t >= 1.0f) pair.t = 0.0f;
     return pair;
 }
 

@@ -1,0 +1,135 @@
+// Lab 10's property checks; see checks.hpp. They call your heightAt() and
+// blendMd2Frames() on data of their own and test a property the docs state.
+
+#include "checks.hpp"
+
+#include <stoa/crowd/CrowdLab.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace lab10 {
+
+namespace {
+
+// Numbers in [0, 1) from a fixed seed: the same data every run.
+struct Lcg {
+    std::uint32_t state = 20261125u;
+    float next() {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) / 16777216.0f;
+    }
+};
+
+std::string describe(glm::vec2 p) {
+    char text[64];
+    std::snprintf(text, sizeof text, "(%.3f, %.3f)", p.x, p.y);
+    return text;
+}
+
+} // namespace
+
+stoa::CheckResult checkHeightsAtTexelCentres() {
+    Lcg random;
+    stoa::HeightField field;
+    field.grid.width = 9;
+    field.grid.height = 6;
+    field.grid.footprintMin = glm::vec2(-7.0f, 3.0f);
+    field.grid.footprintMax = glm::vec2(11.0f, 15.0f);   // texels 2 m square
+    field.heightMin = -1.0f;
+    field.heightMax = 3.0f;
+    for (int i = 0; i < field.grid.width * field.grid.height; ++i) field.values.push_back(random.next());
+    const glm::vec2 cell = (field.grid.footprintMax - field.grid.footprintMin) /
+                           glm::vec2(field.grid.width, field.grid.height);
+    const auto metres = [&](int col, int row) {
+        return field.heightMin + (field.heightMax - field.heightMin) *
+                                     field.values[static_cast<std::size_t>(row * field.grid.width + col)];
+    };
+    const auto centre = [&](int col, int row) {
+        return field.grid.footprintMin + (glm::vec2(col, row) + 0.5f) * cell;
+    };
+    for (int row = 0; row < field.grid.height; ++row) {
+        for (int col = 0; col < field.grid.width; ++col) {
+            const glm::vec2 at = centre(col, row);
+            const float height = stoa::heightAt(field, at);
+            if (std::fabs(height - metres(col, row)) > 1e-4f) {
+                return stoa::CheckResult::fail(
+                    "heightAt() at the centre " + describe(at) + " of texel (" + std::to_string(col) + ", " +
+                    std::to_string(row) + ") is " + std::to_string(height) + " m; that texel's height is " +
+                    std::to_string(metres(col, row)) + " m (the samples sit at the texel centres)");
+            }
+        }
+    }
+    for (int row = 0; row + 1 < field.grid.height; ++row) {
+        for (int col = 0; col + 1 < field.grid.width; ++col) {
+            const glm::vec2 at = 0.5f * (centre(col, row) + centre(col + 1, row + 1));
+            const float mean = 0.25f * (metres(col, row) + metres(col + 1, row) + metres(col, row + 1) +
+                                        metres(col + 1, row + 1));
+            const float height = stoa::heightAt(field, at);
+            if (std::fabs(height - mean) > 1e-4f) {
+                return stoa::CheckResult::fail("heightAt() halfway between the centres of texels (" +
+                                               std::to_string(col) + ", " + std::to_string(row) + ") and (" +
+                                               std::to_string(col + 1) + ", " + std::to_string(row + 1) + "), at " +
+                                               describe(at) + ", is " + std::to_string(height) +
+                                               " m; the mean of the four is " + std::to_string(mean) + " m");
+            }
+        }
+    }
+    return stoa::CheckResult::pass("heightAt() is each texel's height at its centre and the mean of four between them (" +
+                                   std::to_string(field.grid.width * field.grid.height) + " centres, " +
+                                   std::to_string((field.grid.width - 1) * (field.grid.height - 1)) + " midpoints)");
+}
+
+stoa::CheckResult checkBlendedNormalsUnit() {
+    Lcg random;
+    stoa::Md2Frame first, second;
+    const auto unit = [&]() {
+        for (;;) {
+            const glm::vec3 v(2.0f * random.next() - 1.0f, 2.0f * random.next() - 1.0f, 2.0f * random.next() - 1.0f);
+            const float length = glm::length(v);
+            if (length > 0.2f && length <= 1.0f) return v / length;
+        }
+    };
+    for (int i = 0; i < 200; ++i) {
+        first.positions.emplace_back(random.next(), random.next(), random.next());
+        second.positions.emplace_back(random.next(), random.next(), random.next());
+        first.normals.push_back(unit());
+        glm::vec3 other = unit();
+        if (glm::dot(other, first.normals.back()) < -0.9f) other = -other;   // not opposite: their blend never vanishes
+        second.normals.push_back(other);
+    }
+    std::vector<glm::vec3> positions, normals;
+    for (const float t : {0.0f, 0.25f, 0.5f, 0.8f}) {
+        stoa::blendMd2Frames(first, second, t, positions, normals);
+        if (positions.size() != first.positions.size() || normals.size() != first.normals.size()) {
+            return stoa::CheckResult::fail("blendMd2Frames() gave " + std::to_string(positions.size()) + " positions and " +
+                                           std::to_string(normals.size()) + " normals for frames of " +
+                                           std::to_string(first.positions.size()) + " vertices");
+        }
+        for (std::size_t i = 0; i < normals.size(); ++i) {
+            const glm::vec3 line = first.positions[i] + t * (second.positions[i] - first.positions[i]);
+            if (glm::length(positions[i] - line) > 1e-4f) {
+                return stoa::CheckResult::fail("blendMd2Frames() at t = " + std::to_string(t) + " put vertex " +
+                                               std::to_string(i) + " off the straight line between its two frames");
+            }
+            if (std::fabs(glm::length(normals[i]) - 1.0f) > 1e-3f) {
+                return stoa::CheckResult::fail("blendMd2Frames() at t = " + std::to_string(t) + " gave vertex " +
+                                               std::to_string(i) + " a normal of length " +
+                                               std::to_string(glm::length(normals[i])) +
+                                               "; normals must be unit length (a blend of two is shorter: normalize it)");
+            }
+            if (t == 0.0f && glm::length(normals[i] - first.normals[i]) > 1e-4f) {
+                return stoa::CheckResult::fail("blendMd2Frames() at t = 0 gave vertex " + std::to_string(i) +
+                                               " a normal other than the first frame's");
+            }
+        }
+    }
+    return stoa::CheckResult::pass("blendMd2Frames() keeps 200 vertices on the line between their frames with unit normals at t = 0, 0.25, 0.5 and 0.8");
+}
+
+} // namespace lab10

@@ -1,0 +1,20 @@
+#pragma once
+// Lab 10's property checks (the cases with a `check` key in cases.ini), for
+// what the pictures show too faintly to grade. See docs/labs/10_crowds.md, "Checks".
+
+#include <stoa/lab/PropertyCheck.hpp>
+
+namespace lab10 {
+
+/// heights_at_texel_centres: the height map's values are samples at the texel
+/// centres, so heightAt() at a texel's centre is that texel's height exactly,
+/// and halfway between four neighbouring centres it is their mean. Tried on a
+/// field of random values over a footprint that does not start at the origin.
+stoa::CheckResult checkHeightsAtTexelCentres();
+
+/// blended_normals_unit: blendMd2Frames() gives unit normals for every t
+/// between the frames (two unit normals blended are shorter than one), the
+/// first frame at t = 0, and positions on the straight line between the two.
+stoa::CheckResult checkBlendedNormalsUnit();
+
+} // namespace lab10
