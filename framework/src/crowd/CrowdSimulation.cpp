@@ -63,6 +63,13 @@ float portableAtan2(float y, float x) {
 
 glm::vec2 direction(float heading) { return {portableSin(heading), portableCos(heading)}; }
 
+/// The grid cell that holds coordinate `cells` (in cell units), clamped to
+/// [0, count - 1]: the same as clamp(floor(cells)), without a call into libm
+/// (std::floor is one without SSE4.1, and this runs several times per agent).
+int cellIndex(float cells, int count) {
+    return static_cast<int>(std::clamp(cells, 0.0f, static_cast<float>(count - 1)));
+}
+
 std::string metres(float value) {
     char text[32];
     std::snprintf(text, sizeof text, "%g m", static_cast<double>(value));
@@ -272,8 +279,7 @@ void CrowdSimulation::rebuildAgentGrid() {
     for (std::size_t i = 0; i < m_agents.size(); ++i) {
         if (!m_agents[i].alive) continue;
         const glm::vec2 p = (m_agents[i].position - origin) / m_cellSize;
-        const int cx = std::clamp(static_cast<int>(std::floor(p.x)), 0, m_cellsX - 1);
-        const int cz = std::clamp(static_cast<int>(std::floor(p.y)), 0, m_cellsZ - 1);
+        const int cx = cellIndex(p.x, m_cellsX), cz = cellIndex(p.y, m_cellsZ);
         m_cellOf[i] = cz * m_cellsX + cx;
         ++m_cellStart[static_cast<std::size_t>(m_cellOf[i]) + 1];
     }
@@ -292,10 +298,8 @@ void CrowdSimulation::forEachNear(glm::vec2 from, float radius, Visit&& visit) c
     const glm::vec2 origin = m_maps.collision.grid.footprintMin;
     const glm::vec2 low = (from - radius - origin) / m_cellSize;
     const glm::vec2 high = (from + radius - origin) / m_cellSize;
-    const int x0 = std::clamp(static_cast<int>(std::floor(low.x)), 0, m_cellsX - 1);
-    const int x1 = std::clamp(static_cast<int>(std::floor(high.x)), 0, m_cellsX - 1);
-    const int z0 = std::clamp(static_cast<int>(std::floor(low.y)), 0, m_cellsZ - 1);
-    const int z1 = std::clamp(static_cast<int>(std::floor(high.y)), 0, m_cellsZ - 1);
+    const int x0 = cellIndex(low.x, m_cellsX), x1 = cellIndex(high.x, m_cellsX);
+    const int z0 = cellIndex(low.y, m_cellsZ), z1 = cellIndex(high.y, m_cellsZ);
     const float r2 = radius * radius;
     for (int cz = z0; cz <= z1; ++cz) {
         for (int cx = x0; cx <= x1; ++cx) {
