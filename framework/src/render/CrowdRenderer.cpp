@@ -274,23 +274,21 @@ void CrowdRenderer::drawMarkers(const CrowdSimulation& simulation, const CrowdVi
     const auto groundAt = [&](glm::vec2 xz) { return simulation.code().heightAt(heights, xz); };
     std::vector<Instance> instances;
     m_programs.markers->use();
-    for (const glm::vec2& sample : simulation.samples()) {
-        Instance instance;
-        instance.model = glm::translate(glm::mat4(1.0f), glm::vec3(sample.x, groundAt(sample) + 0.15f, sample.y));
-        instance.color = glm::vec4(1.0f, 0.55f, 0.1f, 1.0f);
-        instances.push_back(instance);
-    }
-    m_sampleMesh->setInstances(instances);
-    m_sampleMesh->draw();
-    instances.clear();
-    for (const glm::vec2& crumb : simulation.crumbs()) {
-        Instance instance;
-        instance.model = glm::translate(glm::mat4(1.0f), glm::vec3(crumb.x, groundAt(crumb) + 0.03f, crumb.y));
-        instance.color = glm::vec4(0.95f, 0.95f, 0.9f, 1.0f);
-        instances.push_back(instance);
-    }
-    m_crumbMesh->setInstances(instances);
-    m_crumbMesh->draw();
+    // One instanced draw of `mesh` at each point, `lift` metres above the ground.
+    const auto drawAt = [&](const std::vector<glm::vec2>& points, float lift, const glm::vec4& colour,
+                            InstancedMesh& mesh) {
+        instances.clear();
+        for (const glm::vec2& point : points) {
+            Instance instance;
+            instance.model = glm::translate(glm::mat4(1.0f), glm::vec3(point.x, groundAt(point) + lift, point.y));
+            instance.color = colour;
+            instances.push_back(instance);
+        }
+        mesh.setInstances(instances);
+        mesh.draw();
+    };
+    drawAt(simulation.samples(), 0.15f, glm::vec4(1.0f, 0.55f, 0.1f, 1.0f), *m_sampleMesh);
+    drawAt(simulation.crumbs(), 0.03f, glm::vec4(0.95f, 0.95f, 0.9f, 1.0f), *m_crumbMesh);
     instances.clear();
     for (const Base& base : world.bases) {
         Instance instance;
