@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstring>
 #include <string>
+#include <vector>
 
 // Every check here runs before stb_image sees a byte. stb_image trusts sizes
 // it reads (it allocates what a 54-byte BMP header asks for before it finds
@@ -352,25 +353,23 @@ ImageFileHeader checkImageFile(const std::uint8_t* bytes, std::size_t size, cons
     in.fail("not a PNG, JPG, BMP, TGA or PGM/PPM image (the first bytes match none of them)");
 }
 
-Image decodePnm(const std::uint8_t* bytes, std::size_t size, const std::string& name) {
-    const Reader in(bytes, size, name);
-    const PnmHeader header = readPnmHeader(in);
-    const int channels = header.kind == '3' || header.kind == '6' ? 3 : 1;
-    Image image(static_cast<int>(header.width), static_cast<int>(header.height), channels);
-    const std::size_t samples = image.sizeInBytes();
+namespace {
+
+/// Calls store(i, value) for each of the `samples` samples after the header,
+/// binary (P5, P6: one byte, or two big-endian bytes when maxval > 255) or text
+/// (P2, P3); a value above maxval is clamped (binary) or refused (text).
+template <typename Store>
+void readPnmSamples(const Reader& in, const PnmHeader& header, std::size_t samples, Store&& store) {
     const unsigned long maxValue = static_cast<unsigned long>(header.maxValue);
-    auto scaled = [&](unsigned long value) {
-        return static_cast<std::uint8_t>((value * 255 + maxValue / 2) / maxValue);
-    };
-    std::uint8_t* out = image.data();
     if (header.kind == '5' || header.kind == '6') {
-        const std::uint8_t* sample = bytes + header.dataStart;  // checkImageFile() saw that they are all there
+        // checkImageFile() saw that they are all there.
         for (std::size_t i = 0; i < samples; ++i) {
-            unsigned long value = maxValue > 255 ? (unsigned long)(sample[2 * i] << 8 | sample[2 * i + 1]) : sample[i];
+            const std::size_t at = header.dataStart + (maxValue > 255 ? 2 * i : i);
+            unsigned long value = maxValue > 255 ? (unsigned long)(in.byte(at) << 8 | in.byte(at + 1)) : in.byte(at);
             if (value > maxValue) value = maxValue;
-            out[i] = scaled(value);
+            store(i, value);
         }
-        return image;
+        return;
     }
     std::size_t at = header.dataStart - 1;  // ASCII samples may follow any whitespace
     for (std::size_t i = 0; i < samples; ++i) {
@@ -395,9 +394,39 @@ Image decodePnm(const std::uint8_t* bytes, std::size_t size, const std::string& 
                         std::to_string(maxValue));
             }
         }
-        out[i] = scaled(value);
+        store(i, value);
     }
+}
+
+} // namespace
+
+Image decodePnm(const std::uint8_t* bytes, std::size_t size, const std::string& name) {
+    const Reader in(bytes, size, name);
+    const PnmHeader header = readPnmHeader(in);
+    const int channels = header.kind == '3' || header.kind == '6' ? 3 : 1;
+    Image image(static_cast<int>(header.width), static_cast<int>(header.height), channels);
+    const unsigned long maxValue = static_cast<unsigned long>(header.maxValue);
+    std::uint8_t* out = image.data();
+    readPnmSamples(in, header, image.sizeInBytes(), [&](std::size_t i, unsigned long value) {
+        out[i] = static_cast<std::uint8_t>((value * 255 + maxValue / 2) / maxValue);
+    });
     return image;
+}
+
+std::vector<float> decodePgmFractions(const std::uint8_t* bytes, std::size_t size, const std::string& name, int& width,
+                                      int& height) {
+    const Reader in(bytes, size, name);
+    const PnmHeader header = readPnmHeader(in);
+    if (header.kind == '3' || header.kind == '6') {
+        in.fail("the file is a colour PPM; a height map at full precision must be grey (PGM, P2 or P5)");
+    }
+    width = static_cast<int>(header.width);
+    height = static_cast<int>(header.height);
+    std::vector<float> values(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    const float maxValue = static_cast<float>(header.maxValue);
+    readPnmSamples(in, header, values.size(),
+                   [&](std::size_t i, unsigned long value) { values[i] = static_cast<float>(value) / maxValue; });
+    return values;
 }
 
 } // namespace stoa::detail

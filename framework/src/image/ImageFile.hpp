@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace stoa::detail {
 
@@ -35,5 +36,10 @@ void checkJpegData(const std::uint8_t* bytes, std::size_t size, const std::strin
 /// Decodes a PGM or PPM (P2, P3, P5, P6) whose header checkImageFile() has
 /// accepted; samples are scaled from 0..maxval to 0..255.
 Image decodePnm(const std::uint8_t* bytes, std::size_t size, const std::string& name);
+
+/// The same for a PGM (P2, P5) at full precision: each sample / maxval, in [0, 1].
+/// A colour PPM is refused (InputError).
+std::vector<float> decodePgmFractions(const std::uint8_t* bytes, std::size_t size, const std::string& name, int& width,
+                                      int& height);
 
 } // namespace stoa::detail

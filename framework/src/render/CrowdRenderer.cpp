@@ -202,16 +202,9 @@ void CrowdRenderer::drawScenery(const Program& program, bool depthOnly, bool fla
     }
 }
 
-void CrowdRenderer::drawAgents(const Program& program, const CrowdSimulation& simulation,
-                               const CrowdDrawOptions& options) {
+void CrowdRenderer::uploadAgents(const CrowdSimulation& simulation, const CrowdDrawOptions& options) {
     const CrowdLabCode& code = simulation.code();
     const std::vector<CrowdAgent>& agents = simulation.agents();
-    program.use();
-    program.set("uLightSpace", m_lightSpace);
-    program.set("uFrames", kFramesUnit);
-    program.set("uDiffuse", glm::vec3(1.0f));
-    program.set("uHasTexture", true);
-    program.set("uTexture", kTextureUnit);
     std::vector<Instance> instances;
     for (std::size_t type = 0; type < m_models.size(); ++type) {
         Md2GpuModel& gpu = *m_models[type];
@@ -236,14 +229,25 @@ void CrowdRenderer::drawAgents(const Program& program, const CrowdSimulation& si
             instances.push_back(instance);
         }
         gpu.corners->setInstances(instances);
-        program.set("uVertexCount", static_cast<int>(gpu.model.vertexCount()));
-        gpu.frames.bind(kFramesUnit);
-        gpu.skin.bind(kTextureUnit);
-        gpu.corners->draw();
     }
 }
 
-void CrowdRenderer::renderShadowMap(const CrowdSimulation& simulation, const CrowdDrawOptions& options) {
+void CrowdRenderer::drawAgents(const Program& program) {
+    program.use();
+    program.set("uLightSpace", m_lightSpace);
+    program.set("uFrames", kFramesUnit);
+    program.set("uDiffuse", glm::vec3(1.0f));
+    program.set("uHasTexture", true);
+    program.set("uTexture", kTextureUnit);
+    for (const std::unique_ptr<Md2GpuModel>& gpu : m_models) {
+        program.set("uVertexCount", static_cast<int>(gpu->model.vertexCount()));
+        gpu->frames.bind(kFramesUnit);
+        gpu->skin.bind(kTextureUnit);
+        gpu->corners->draw();
+    }
+}
+
+void CrowdRenderer::renderShadowMap(const CrowdDrawOptions& options) {
     // An orthographic box around the footprint, seen from the sun.
     const glm::vec3 centre = 0.5f * (m_sceneMin + m_sceneMax);
     const float radius = 0.5f * glm::length(m_sceneMax - m_sceneMin);
@@ -263,7 +267,7 @@ void CrowdRenderer::renderShadowMap(const CrowdSimulation& simulation, const Cro
     pass.state.cull = CullMode::None;
     beginPass(pass);
     drawScenery(*m_programs.sceneryDepth, true);
-    drawAgents(*m_programs.agentsDepth, simulation, options);
+    drawAgents(*m_programs.agentsDepth);
     StateCache::current().bindFramebuffer(previous);
 }
 
@@ -315,7 +319,8 @@ void CrowdRenderer::drawMarkers(const CrowdSimulation& simulation, const CrowdVi
 
 void CrowdRenderer::render(const CrowdSimulation& simulation, const CrowdView& view, glm::ivec2 size,
                            const CrowdDrawOptions& options) {
-    if (options.shadows) renderShadowMap(simulation, options);
+    uploadAgents(simulation, options);   // once for both passes
+    if (options.shadows) renderShadowMap(options);
     m_frame.update(frameBlock(view, options));
     m_frame.bind();
     PassDescription pass = passInto(size);
@@ -332,7 +337,7 @@ void CrowdRenderer::render(const CrowdSimulation& simulation, const CrowdView& v
         program->set("uShadowBias", 0.0015f);
     }
     drawScenery(*m_programs.scenery, false, options.flatScenery);
-    drawAgents(*m_programs.agents, simulation, options);
+    drawAgents(*m_programs.agents);
     if (options.markers) drawMarkers(simulation, view, options);
 }
 

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace stoa {
 
@@ -36,6 +37,21 @@ Image loadHeightMap(const std::filesystem::path& path, std::ostream& warnings);
 Image decodeHeightMap(const std::uint8_t* bytes, std::size_t size, const std::string& name, std::ostream& warnings);
 /// The same, warnings on std::cerr.
 Image loadHeightMap(const std::filesystem::path& path);
+
+/// A height map at full precision, for ground that agents stand on (lab 10's
+/// GroundMaps): values[row * width + col] in [0, 1], row 0 at the top.
+struct HeightSamples {
+    int width = 0;
+    int height = 0;
+    std::vector<float> values;
+};
+
+/// Loads a height map keeping every bit: a 16-bit grey PNG as value / 65535,
+/// a PGM (P2, P5; 8 or 16 bits) as sample / maxval, any other 8-bit image
+/// Image::load() reads as its luminance / 255 (no warning: a ground map may be
+/// drawn in colour). The same checks and limits as Image::load(); InputError
+/// naming the file and the cause.
+HeightSamples loadHeightSamples(const std::filesystem::path& path);
 
 /// Lab 04 (labs/04_normal_mapping/height_to_normal.cpp; docs/labs/04_normal_mapping.md,
 /// "From heights to normals"): a tangent-space normal map from a 1-channel

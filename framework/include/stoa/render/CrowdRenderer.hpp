@@ -111,9 +111,12 @@ public:
     static FrameBlock frameBlock(const CrowdView& view, const CrowdDrawOptions& options);
 
 private:
-    void renderShadowMap(const CrowdSimulation& simulation, const CrowdDrawOptions& options);
+    void renderShadowMap(const CrowdDrawOptions& options);
     void drawScenery(const Program& program, bool depthOnly, bool flat = false);
-    void drawAgents(const Program& program, const CrowdSimulation& simulation, const CrowdDrawOptions& options);
+    /// Each agent's instance (its matrix, and its two frames from the lab's
+    /// md2FramesAt()), per type; once a frame, for the shadow and the lit pass.
+    void uploadAgents(const CrowdSimulation& simulation, const CrowdDrawOptions& options);
+    void drawAgents(const Program& program);
     void drawMarkers(const CrowdSimulation& simulation, const CrowdView& view, const CrowdDrawOptions& options);
 
     CrowdPrograms m_programs;
