@@ -4,7 +4,14 @@
 #   start_lab_window ARGS   start $program ARGS (output in $work/stdout.txt and
 #                           stderr.txt; killed when the script exits), wait up to
 #                           10 s for its window, focus it; sets `pid` and `window`
+#   wait_for_output [-F] PATTERN [FAILURE]
+#                           wait up to 10 s for a line matching the grep -E
+#                           PATTERN (with -F: holding the text PATTERN) in the
+#                           program's output; fail with FAILURE (or a message
+#                           naming PATTERN) if none comes
 #   quit_with_escape        press Escape, wait up to 5 s for the program to end, fail if it does not
+# Wait for what the program prints rather than sleeping a fixed time: on a
+# loaded machine a key or click may take seconds to reach the program.
 # No window manager runs under Xvfb: the window gets the keyboard focus directly.
 
 if [ "${STOA_INSIDE_XVFB:-}" != 1 ]; then
@@ -34,6 +41,18 @@ start_lab_window() {
   done
   [ -n "$window" ] || fail "no window titled 'Stoa lab' appeared within 10 s"
   xdotool windowfocus --sync "$window"
+}
+
+wait_for_output() {
+  local mode=-E
+  if [ "$1" = -F ]; then mode=-F; shift; fi
+  for _ in $(seq 1 100); do
+    grep -q "$mode" -- "$1" "$work/stdout.txt" 2>/dev/null && return 0
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.1
+  done
+  grep -q "$mode" -- "$1" "$work/stdout.txt" 2>/dev/null && return 0
+  fail "${2:-the program did not print a line matching: $1}"
 }
 
 quit_with_escape() {

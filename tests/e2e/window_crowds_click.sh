@@ -10,8 +10,7 @@ source "$(dirname "$0")/window_common.sh"   # Xvfb, fail, start_lab_window
 
 start_lab_window mars_explorers.xml
 xdotool key space
-sleep 0.5
-grep -q "paused at" "$work/stdout.txt" || fail "space did not pause the simulation"
+wait_for_output "^paused at" "space did not pause the simulation"
 
 # The top view fits the 30 m footprint around (0, 0): +x to the right, +z down.
 # The base is at (0, 9); the far corner (-13, -13) is empty ground.
@@ -23,13 +22,11 @@ pixel() {   # x z -> "column row"
 }
 read -r bx by <<< "$(pixel 0 9)"
 xdotool mousemove --window "$window" "$bx" "$by" click 1
-sleep 0.5
-grep -qE "^agent [0-9]+ \(explorer\): search at \(-?[0-9.]+, [0-9.]+\)" "$work/stdout.txt" ||
-  fail "a click on the base (pixel $bx, $by) selected no explorer"
+wait_for_output "^agent [0-9]+ \(explorer\): search at \(-?[0-9.]+, [0-9.]+\)" \
+  "a click on the base (pixel $bx, $by) selected no explorer"
 read -r ex ey <<< "$(pixel -13 -13)"
 xdotool mousemove --window "$window" "$ex" "$ey" click 1
-sleep 0.5
-grep -q "^no agent there" "$work/stdout.txt" || fail "a click on empty ground did not say \"no agent there\""
+wait_for_output "^no agent there" "a click on empty ground did not say \"no agent there\""
 
 quit_with_escape
 echo "a click on the base selected: $(grep -m1 '^agent' "$work/stdout.txt")"

@@ -20,7 +20,7 @@ done
 sleep 0.5
 IFS='|' read -r -a lines <<< "$expected"
 for line in "${lines[@]}"; do
-  grep -qF -- "$line" "$work/stdout.txt" || fail "after the keys '$keys' the program did not print \"$line\""
+  wait_for_output -F "$line" "after the keys '$keys' the program did not print \"$line\""
 done
 
 quit_with_escape
