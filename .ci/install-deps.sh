@@ -7,6 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git ninja-build ccache
   freeglut3-dev libglew-dev libglm-dev libstb-dev libtinyobjloader-dev libimgui-dev libmeshoptimizer-dev libpugixml-dev
+  nlohmann-json3-dev libopenal-dev libvorbis-dev
   libosmesa6-dev libegl-dev libgl1-mesa-dri
   catch2 xvfb xauth xdotool mkdocs python3-pymdownx python3-pygments libjs-mathjax
   zip unzip python3
@@ -16,6 +17,7 @@ if ! command -v apt-get >/dev/null 2>&1; then
   echo "Stoa's installer knows Debian and Ubuntu (apt-get). On this system, install the equivalents of:"
   printf '  %s\n' "${packages[@]}"
   echo "(a C++17 compiler, CMake >= 3.16, pkg-config, freeglut, GLEW, GLM, stb, tinyobjloader, Dear ImGui, meshoptimizer, pugixml,"
+  echo " nlohmann-json 3, OpenAL Soft, libvorbis (its encoder, for the generated sounds),"
   echo " Mesa with llvmpipe, OSMesa (optional where Mesa >= 25.1), EGL, Catch2, Xvfb, MkDocs with"
   echo " pymdown-extensions and Pygments, MathJax 2.7 (STOA_MATHJAX_DIR: its folder))"
   exit 1

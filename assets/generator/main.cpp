@@ -5,10 +5,12 @@
 //   stoa-generate-assets --dense-statue N OUTPUT_DIR    only statue_dense.obj, about N triangles
 //   stoa-generate-assets --sky OUTPUT_DIR               the sky's six cube-map faces (assets/sky/)
 //   stoa-generate-assets --characters OUTPUT_DIR        lab 10's MD2 characters and skins (assets/crowds/)
+//   stoa-generate-assets --sounds OUTPUT_DIR            the Ogg Vorbis sounds (assets/sounds/)
 
 #include "Acropolis.hpp"
 #include "Characters.hpp"
 #include "Sky.hpp"
+#include "Sounds.hpp"
 
 #include <stoa/core/InputError.hpp>
 
@@ -25,10 +27,12 @@ int usage() {
                  "       stoa-generate-assets --dense-statue TRIANGLES OUTPUT_DIR\n"
                  "       stoa-generate-assets --sky OUTPUT_DIR\n"
                  "       stoa-generate-assets --characters OUTPUT_DIR\n"
+                 "       stoa-generate-assets --sounds OUTPUT_DIR\n"
                  "Writes the Acropolis scene (assets/acropolis/ is its committed output), or only a\n"
                  "statue with about TRIANGLES triangles as OUTPUT_DIR/statue_dense.obj, or the sky's\n"
                  "six cube-map faces (assets/sky/ is their committed output), or lab 10's three MD2\n"
-                 "characters with their skins (assets/crowds/ is their committed output).\n");
+                 "characters with their skins (assets/crowds/ is their committed output), or the\n"
+                 "footstep, spark and wind sounds as Ogg Vorbis (assets/sounds/ is their committed output).\n");
     return 2;
 }
 
@@ -49,6 +53,11 @@ int main(int argc, char** argv) {
         if (argc == 3 && std::string(argv[1]) == "--characters") {
             stoa::assets::generateCharacters(argv[2]);
             std::printf("wrote %zu files to %s\n", stoa::assets::characterFileNames().size(), argv[2]);
+            return 0;
+        }
+        if (argc == 3 && std::string(argv[1]) == "--sounds") {
+            stoa::assets::generateSounds(argv[2]);
+            std::printf("wrote %zu files to %s\n", stoa::assets::soundFileNames().size(), argv[2]);
             return 0;
         }
         if (argc == 4 && std::string(argv[1]) == "--dense-statue") {

@@ -19,6 +19,12 @@ stoa_require_pkg(STB stb libstb-dev)
 # Dear ImGui with its GLUT and OpenGL 3 backends, built into Debian's static
 # libimgui.a: the window's UI panel (F1; framework/src/app/ImGuiLayer.cpp).
 stoa_require_pkg(IMGUI imgui libimgui-dev)
+# OpenAL Soft plays positional sound (audio/SoundDevice.cpp; stb_vorbis, in libstb,
+# decodes the clips). libvorbis's encoder writes the generated sounds (assets/generator/Sounds.cpp).
+stoa_require_pkg(OPENAL openal libopenal-dev)
+stoa_require_pkg(VORBISENC vorbisenc libvorbis-dev)
+stoa_require_pkg(VORBIS vorbis libvorbis-dev)
+stoa_require_pkg(OGG ogg libogg-dev)
 
 find_package(tinyobjloader CONFIG QUIET)
 if(NOT tinyobjloader_FOUND)
@@ -35,6 +41,12 @@ endif()
 find_package(pugixml CONFIG QUIET)
 if(NOT pugixml_FOUND)
   message(FATAL_ERROR "Stoa needs pugixml (Debian package: libpugixml-dev). Run .ci/install-deps.sh.")
+endif()
+
+# nlohmann-json (header only) reads and writes the editor's scene files (editor/EditorSceneFile.cpp).
+find_package(nlohmann_json 3 CONFIG QUIET)
+if(NOT nlohmann_json_FOUND)
+  message(FATAL_ERROR "Stoa needs nlohmann-json 3 (Debian package: nlohmann-json3-dev). Run .ci/install-deps.sh.")
 endif()
 
 find_path(GLM_INCLUDE_DIR glm/glm.hpp)

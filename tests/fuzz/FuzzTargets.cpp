@@ -2,11 +2,13 @@
 
 #include <stoa/core/InputError.hpp>
 #include <stoa/crowd/CrowdXml.hpp>
+#include <stoa/editor/EditorSceneFile.hpp>
 #include <stoa/geometry/Md2Model.hpp>
 #include <stoa/geometry/ObjLoader.hpp>
 #include <stoa/image/HeightMap.hpp>
 #include <stoa/image/Image.hpp>
 
+#include <set>
 #include <sstream>
 
 namespace stoa::fuzz {
@@ -101,6 +103,39 @@ bool crowdXml(const std::uint8_t* data, std::size_t size) {
         (void)std::string(error.what());
         return false;
     }
+}
+
+bool editorScene(const std::uint8_t* data, std::size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    EditorScene scene;
+    try {
+        scene = editorSceneFromJson(text, "fuzz.json");
+    } catch (const InputError& error) {
+        (void)std::string(error.what());
+        return false;
+    }
+    // Each scene read keeps its promises: ids from 1 and unique, every object's
+    // material exists, the ranges the reader checks hold.
+    std::set<std::uint32_t> ids;
+    for (const EditorObject& object : scene.objects) {
+        if (object.id == 0 || !ids.insert(object.id).second || !scene.findMaterial(object.material)) __builtin_trap();
+    }
+    for (const EditorLight& light : scene.lights) {
+        if (light.id == 0 || !ids.insert(light.id).second || !(light.radius > 0.0f)) __builtin_trap();
+    }
+    for (const EditorMaterial& material : scene.materials)
+        if (!(material.shininess > 0.0f)) __builtin_trap();
+    const int pcf = scene.renderer.pcfSize;
+    if (pcf != 1 && pcf != 3 && pcf != 5) __builtin_trap();
+    // And it saves, and the saved text reads back to itself: what the editor
+    // opened, it can write, and reopen.
+    try {
+        const std::string saved = editorSceneToJson(scene);
+        if (editorSceneToJson(editorSceneFromJson(saved, "fuzz-saved.json")) != saved) __builtin_trap();
+    } catch (...) {
+        __builtin_trap();
+    }
+    return true;
 }
 
 } // namespace stoa::fuzz

@@ -23,6 +23,9 @@ bool md2(const std::uint8_t* data, std::size_t size);
 /// A crowd world's XML, stoa::parseCrowdWorld, named fuzz.xml in a folder
 /// that does not exist (so an <include> is refused, never read).
 bool crowdXml(const std::uint8_t* data, std::size_t size);
+/// An editor scene file's JSON, stoa::editorSceneFromJson; a scene it reads
+/// must also save, and read back to the same text.
+bool editorScene(const std::uint8_t* data, std::size_t size);
 
 /// The separator line of obj() inputs.
 inline const std::string mtlSeparator = "\n#@mtl\n";

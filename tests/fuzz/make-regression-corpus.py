@@ -3,9 +3,9 @@
 
     tests/fuzz/make-regression-corpus.py OUT_DIR
 
-OUT_DIR/seeds/{obj,image,md2,crowd_xml}/       small valid files the fuzzers start from
-OUT_DIR/regression/{obj,image,md2,crowd_xml}/  every input that ever broke a loader (issue 14's
-                                               cases first), generated here rather than committed
+OUT_DIR/seeds/{obj,image,md2,crowd_xml,editor_scene}/       small valid files the fuzzers start from
+OUT_DIR/regression/{obj,image,md2,crowd_xml,editor_scene}/  every input that ever broke a loader (issue 14's
+                                                            cases first), generated here rather than committed
 
 A regression file's name says what the loaders must do with it: "ok-..." must
 load, "err-..." must be refused with an InputError. The image files go to
@@ -17,7 +17,9 @@ copied to tests/fuzz/findings/{obj,image,md2}/, which the replay also reads. The
 MD2 files are written here with struct (md2() below), not by stoa::encodeMd2, so
 the loader is checked against a second writer of the format. The crowd_xml
 files are whole world files without includes (tests/crowd/CrowdXmlTests.cpp
-checks the same mistakes with their lines).
+checks the same mistakes with their lines). The editor_scene files are scene
+files (tests/editor/EditorSceneFileTests.cpp checks the same mistakes with
+their lines); the example scene assets/scenes/example.json is a seed.
 """
 import math
 import os
@@ -472,6 +474,79 @@ def crowd_xml_regression():
     }
 
 
+EDITOR_SCENE = """{
+  "stoa_scene": 1,
+  "ambient": [0.1, 0.1, 0.1],
+  "sun": {"direction": [-0.4, -1, -0.3], "color": [1, 1, 1]},
+  "camera": {"target": [0, 0, 0], "distance": 12, "yaw": 30, "pitch": 25},
+  "renderer": {"deferred": false, "shadows": true, "pcf": 3, "normal_maps": true, "ssao": false, "debug_view": "final"},
+  "crowd_world": "",
+  "materials": [
+    {"name": "marble", "diffuse": [0.8, 0.8, 0.8], "specular": [0.2, 0.2, 0.2], "shininess": 32,
+     "diffuse_map": "acropolis/column_diffuse.png", "normal_map": "", "shader": "editor/lit"}
+  ],
+  "objects": [
+    {"id": 1, "name": "floor", "mesh": "shape:plane", "material": "marble", "position": [0, 0, 0],
+     "rotation": [0, 0, 0], "scale": [12, 1, 12]}
+  ],
+  "lights": [
+    {"id": 2, "name": "lamp", "position": [0, 3, 0], "color": [1.5, 1.2, 0.9], "radius": 6, "on": true}
+  ]
+}
+"""
+
+
+def editor_scene_seeds():
+    return {
+        "example.json": open(os.path.join(ROOT, "assets", "scenes", "example.json"), "rb").read(),
+        "small.json": EDITOR_SCENE,
+        "version-only.json": '{"stoa_scene": 1}',
+    }
+
+
+def editor_scene_regression():
+    scene = lambda old, new: EDITOR_SCENE.replace(old, new, 1)
+    return {
+        "ok-keys-in-another-order.json": '{"lights": [], "objects": [], "materials": [], "stoa_scene": 1}',
+        "ok-byte-order-mark-and-crlf.json": "\ufeff" + EDITOR_SCENE.replace("\n", "\r\n"),
+        "ok-tiny-and-huge-floats.json": scene('"position": [0, 0, 0]', '"position": [1e-45, 3.4028235e38, -0.0]'),
+        "ok-float-underflows-to-0.json": scene('"yaw": 30', '"yaw": 1e-60'),
+        "ok-escapes-in-names.json": scene('"name": "lamp"', '"name": "l\\u00e4mp \\"one\\" \\\\ \\ud83d\\ude00"'),
+        "err-empty.json": "",
+        "err-binary.json": bytes(range(256)),
+        "err-not-an-object.json": "[1, 2, 3]",
+        "err-no-version.json": '{"ambient": [0, 0, 0]}',
+        "err-newer-version.json": scene('"stoa_scene": 1', '"stoa_scene": 2'),
+        "err-version-past-int64.json": scene('"stoa_scene": 1', '"stoa_scene": 99999999999999999999'),
+        "err-version-float.json": scene('"stoa_scene": 1', '"stoa_scene": 1.0'),
+        "err-unknown-key.json": scene('"ambient"', '"ambiant"'),
+        "err-duplicate-key.json": scene('"yaw": 30,', '"yaw": 30, "yaw": 31,'),
+        "err-vec3-of-2.json": scene('"position": [0, 0, 0]', '"position": [0, 0]'),
+        "err-vec3-of-strings.json": scene('"position": [0, 0, 0]', '"position": ["0", "0", "0"]'),
+        "err-zero-id.json": scene('"id": 1', '"id": 0'),
+        "err-id-past-32-bits.json": scene('"id": 1', '"id": 4294967296'),
+        "err-id-negative.json": scene('"id": 1', '"id": -1'),
+        "err-duplicate-id.json": scene('"id": 2', '"id": 1'),
+        "err-unknown-material.json": scene('"material": "marble"', '"material": "granite"'),
+        "err-duplicate-material.json": scene('"materials": [', '"materials": [{"name": "marble"},'),
+        "err-shininess-0.json": scene('"shininess": 32', '"shininess": 0'),
+        "err-radius-negative.json": scene('"radius": 6', '"radius": -6'),
+        "err-pcf-4.json": scene('"pcf": 3', '"pcf": 4'),
+        "err-float-overflow.json": scene('"yaw": 30', '"yaw": 1e39'),
+        "err-double-overflow.json": scene('"yaw": 30', '"yaw": 1e400'),
+        "err-nul-in-name.json": scene('"name": "lamp"', '"name": "la\\u0000mp"'),
+        "err-lone-surrogate.json": scene('"name": "lamp"', '"name": "\\ud800"'),
+        "err-invalid-utf8.json": scene('"name": "lamp"', '"name": "\udcff"').encode("utf-8", "surrogateescape"),
+        "err-trailing-comma.json": scene('"on": true}', '"on": true,}'),
+        "err-comment.json": "// a scene\n" + EDITOR_SCENE,
+        "err-unclosed.json": EDITOR_SCENE[:-3],
+        "err-nested-1000-deep.json": '{"stoa_scene": 1, "crowd_world": ' + "[" * 1000 + "]" * 1000 + "}",
+        "err-two-values.json": EDITOR_SCENE + "{}",
+        "err-nul-then-garbage.json": EDITOR_SCENE + "\0garbage",
+        "err-unknown-shape.json": scene('"shape:plane"', '"shape:torus"'),
+    }
+
+
 def write(folder, files):
     os.makedirs(folder, exist_ok=True)
     for name, data in files.items():
@@ -490,6 +565,7 @@ def main():
     write(os.path.join(out, "seeds", "image"), images)
     write(os.path.join(out, "seeds", "md2"), md2_seeds())
     write(os.path.join(out, "seeds", "crowd_xml"), crowd_xml_seeds())
+    write(os.path.join(out, "seeds", "editor_scene"), editor_scene_seeds())
     objs, images = regression()
     models = md2_regression()
     write(os.path.join(out, "regression", "obj"), objs)
@@ -497,7 +573,9 @@ def main():
     write(os.path.join(out, "regression", "md2"), models)
     worlds = crowd_xml_regression()
     write(os.path.join(out, "regression", "crowd_xml"), worlds)
-    count = sum(len(files) for files in (objs, images, models, worlds))
+    scenes = editor_scene_regression()
+    write(os.path.join(out, "regression", "editor_scene"), scenes)
+    count = sum(len(files) for files in (objs, images, models, worlds, scenes))
     print("wrote %d regression files and the seeds to %s" % (count, out))
 
 

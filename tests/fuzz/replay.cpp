@@ -4,8 +4,8 @@
 //
 //   stoa-fuzz-replay CORPUS_DIR [MORE_DIRS...]
 //
-// CORPUS_DIR is what make-regression-corpus.py writes: regression/{obj,image,md2,crowd_xml}
-// and seeds/{obj,image,md2,crowd_xml}; a further folder (tests/fuzz/findings) holds
+// CORPUS_DIR is what make-regression-corpus.py writes: regression/{obj,image,md2,crowd_xml,editor_scene}
+// and seeds/{obj,image,md2,crowd_xml,editor_scene}; a further folder (tests/fuzz/findings) holds
 // obj/, image/ and md2/ too; the folder picks the entry point. A file named
 // "ok-..." and every seed must load, a file named "err-..." must be refused
 // with an InputError (an image as an image and as a height map); any other
@@ -40,7 +40,7 @@ void expect(bool condition, const fs::path& path, const char* what) {
 }
 
 void replay(const fs::path& folder, bool seeds) {
-    for (const char* kind : {"obj", "image", "md2", "crowd_xml"}) {
+    for (const char* kind : {"obj", "image", "md2", "crowd_xml", "editor_scene"}) {
         const fs::path dir = folder / kind;
         if (!fs::is_directory(dir)) continue;
         std::vector<fs::path> paths;
@@ -60,8 +60,9 @@ void replay(const fs::path& folder, bool seeds) {
                                                                : stoa::fuzz::md2(data, bytes.size());
                 if (mustLoad) expect(loaded, path, "must load, but was refused");
                 if (mustFail) expect(!loaded, path, "must be refused, but loaded");
-            } else if (std::string(kind) == "crowd_xml") {
-                const bool loaded = stoa::fuzz::crowdXml(data, bytes.size());
+            } else if (std::string(kind) == "crowd_xml" || std::string(kind) == "editor_scene") {
+                const bool loaded = std::string(kind) == "crowd_xml" ? stoa::fuzz::crowdXml(data, bytes.size())
+                                                                     : stoa::fuzz::editorScene(data, bytes.size());
                 if (mustLoad) expect(loaded, path, "must load, but was refused");
                 if (mustFail) expect(!loaded, path, "must be refused, but loaded");
             } else {

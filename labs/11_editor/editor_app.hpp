@@ -1,0 +1,689 @@
+#pragma once
+// Lab 11's app: a small scene edited by a script of editor commands, the way a
+// user would with the mouse and keys, then drawn with the selection outlined
+// and its move gizmo. Every command goes through your code: a click picks
+// through the stencil buffer (objectAtPixel, stencil_pick.cpp), a drag moves
+// along an axis (dragAlongAxis, gizmo.cpp), every edit is a command in your
+// EditHistory (history.cpp), and the panel's texture reloads when your
+// assetsToReload() (hot_reload.cpp) says so. Not a student file.
+//
+// Case keys besides the camera's (CameraRig.hpp):
+//   commands = C; C; ...   editor commands, run in order before the picture:
+//       select X Y              a click at pixel (X, Y) of the picture (from the top-left)
+//       drag AXIS X0 Y0 X1 Y1   the selection dragged along x, y or z from pixel
+//                               (X0, Y0) to (X1, Y1), in 4 mouse moves (one edit)
+//       material NAME           the selection's material becomes NAME
+//       delete                  the selection is deleted
+//       undo | redo             your EditHistory's undo() and redo()
+//       save FILE at T          the panel's file FILE (diffuse or stripes) saved at T seconds
+//       tick T                  the editor's clock at T seconds: your assetsToReload() decides
+//   view = shaded | stencil     stencil: the pick pass's values in false colour (default shaded)
+//   pick_radius = n             pixels a click may miss a thin object by, 0..8 (default 4)
+//   debounce = seconds          the hot-reload quiet time, [0, 2] (default 0.25)
+// In the window: a click selects, a drag on an arrow of the gizmo moves the
+// selection along it, u undoes, r redoes, m gives the selection the next
+// material, x deletes it, v switches the view.
+
+#include "editor.hpp"
+
+#include <stoa/camera/CameraRig.hpp>
+#include <stoa/core/InputError.hpp>
+#include <stoa/geometry/DebugLines.hpp>
+#include <stoa/geometry/Material.hpp>
+#include <stoa/geometry/Shapes.hpp>
+#include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/GpuMesh.hpp>
+#include <stoa/gl/Program.hpp>
+#include <stoa/gl/RenderPass.hpp>
+#include <stoa/gl/StateCache.hpp>
+#include <stoa/gl/Texture2D.hpp>
+#include <stoa/image/Image.hpp>
+#include <stoa/lab/CaseManifest.hpp>
+#include <stoa/lab/Lab.hpp>
+#include <stoa/math/Transforms.hpp>
+#include <stoa/render/DebugLineRenderer.hpp>
+#include <stoa/render/FrameUniforms.hpp>
+#include <stoa/render/ObjectUniforms.hpp>
+#include <stoa/render/TextureOverlay.hpp>
+#include <stoa/scene/DrawList.hpp>
+#include <stoa/scene/Scene.hpp>
+
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace stoa {
+
+/// The scene lab 11 edits: a floor, a column, a crate, a bronze ball, a thin
+/// golden pole (hard to click) and a panel whose texture the hot-reload cases
+/// rewrite, under the sun and two point lights.
+inline EditorScene editorLabScene() {
+    EditorScene scene;
+    scene.ambient = glm::vec3(0.16f, 0.17f, 0.2f);
+    scene.sunDirection = glm::vec3(-0.5f, -1.0f, -0.35f);
+    scene.sunColor = glm::vec3(0.75f, 0.72f, 0.66f);
+    const auto material = [&](const char* name, glm::vec3 diffuse, glm::vec3 specular, float shininess) {
+        EditorMaterial m;
+        m.name = name;
+        m.diffuse = diffuse;
+        m.specular = specular;
+        m.shininess = shininess;
+        scene.materials.push_back(m);
+    };
+    material("slate", {0.32f, 0.34f, 0.38f}, glm::vec3(0.05f), 8.0f);
+    material("marble", {0.86f, 0.84f, 0.79f}, glm::vec3(0.3f), 48.0f);
+    material("terracotta", {0.78f, 0.36f, 0.2f}, glm::vec3(0.1f), 16.0f);
+    material("bronze", {0.55f, 0.38f, 0.18f}, glm::vec3(0.6f), 64.0f);
+    material("gold", {0.92f, 0.72f, 0.2f}, glm::vec3(0.8f), 96.0f);
+    material("teal", {0.16f, 0.58f, 0.56f}, glm::vec3(0.25f), 32.0f);
+    material("panel", glm::vec3(1.0f), glm::vec3(0.1f), 16.0f);
+    scene.materials.back().diffuseMap = "panel";   // the hot-reload asset (EditorLabApp::panelTexture)
+
+    const auto object = [&](const char* name, const char* mesh, const char* materialName, glm::vec3 position,
+                             glm::vec3 scale, glm::vec3 rotation = glm::vec3(0.0f)) {
+        EditorObject& o = scene.addObject(name, mesh, materialName);
+        o.position = position;
+        o.scale = scale;
+        o.rotationDegrees = rotation;
+    };
+    object("floor", "shape:plane", "slate", {0.0f, 0.0f, 0.0f}, {12.0f, 1.0f, 12.0f});
+    object("column", "shape:cylinder", "marble", {-2.6f, 1.5f, 0.2f}, {0.7f, 3.0f, 0.7f});
+    object("crate", "shape:cube", "terracotta", {0.4f, 0.5f, 0.9f}, glm::vec3(1.0f), {0.0f, 20.0f, 0.0f});
+    object("ball", "shape:sphere", "bronze", {2.5f, 0.6f, -0.8f}, glm::vec3(1.2f));
+    object("pole", "shape:cylinder", "gold", {1.9f, 1.0f, 1.9f}, {0.07f, 2.0f, 0.07f});
+    object("panel", "shape:cube", "panel", {-0.4f, 1.1f, -2.4f}, {2.4f, 2.2f, 0.16f});
+
+    EditorLight warm;
+    warm.id = scene.nextId();
+    warm.name = "warm lamp";
+    warm.position = {-1.5f, 2.6f, 2.2f};
+    warm.color = {1.3f, 0.9f, 0.55f};
+    warm.radius = 7.0f;
+    scene.lights.push_back(warm);
+    EditorLight cool = warm;
+    cool.id = scene.nextId();
+    cool.name = "cool lamp";
+    cool.position = {3.0f, 2.2f, 1.5f};
+    cool.color = {0.4f, 0.6f, 1.1f};
+    scene.lights.push_back(cool);
+    return scene;
+}
+
+class EditorLabApp : public Lab {
+public:
+    static constexpr int kMaxObjects = 255;   // stencil values 1..255
+
+    void initialize(LabResources& resources) override {
+        m_litProgram = &resources.loadProgram("editor/lit.vert", "editor/lit.frag");
+        m_flatProgram = &resources.loadProgram("editor/flat.vert", "editor/flat.frag");
+        m_imageProgram = &resources.loadProgram("basic/image.vert", "basic/image.frag");
+        m_lineProgram = &resources.loadProgram("debug/lines.vert", "debug/lines.frag");
+        for (const Program* program : {m_litProgram, m_flatProgram})
+            program->bindUniformBlock(FrameUniforms::kBlockName, FrameUniforms::kBinding);
+        m_overlay = std::make_unique<TextureOverlay>();
+        m_litUniforms = std::make_unique<ObjectUniforms>(*m_litProgram);
+        m_frame = std::make_unique<FrameUniforms>();
+        m_lines = std::make_unique<DebugLineRenderer>(*m_lineProgram);
+        m_meshes["shape:cube"] = std::make_shared<GpuMesh>(shapes::cube(1.0f));
+        m_meshes["shape:sphere"] = std::make_shared<GpuMesh>(shapes::sphere(0.5f, 32, 16));
+        m_meshes["shape:cylinder"] = std::make_shared<GpuMesh>(shapes::cylinder(0.5f, 1.0f, 32));
+        m_meshes["shape:plane"] = std::make_shared<GpuMesh>(shapes::plane(1.0f, 1));
+    }
+
+    void loadCase(const CaseSpec& spec) override {
+        m_cameras.loadCase(spec);
+        m_view = spec.getChoice("view", {"shaded", "stencil"}, std::string("shaded")) == "stencil" ? View::Stencil
+                                                                                                  : View::Shaded;
+        m_pickRadius = spec.getIntInRange("pick_radius", 0, 8, 4);
+        m_debounce = spec.getNumberInRange("debounce", 0.0, 2.0, 0.25);
+        m_script = spec.has("commands") ? parseCommands(spec) : std::vector<Command>{};
+        m_scriptFrame = glm::vec2(spec.width, spec.height);
+        m_scriptDone = false;
+        reset();
+    }
+
+    void render(glm::ivec2 size) override {
+        m_size = size;
+        const Camera& camera = m_cameras.active();
+        updateFrame(camera);
+        if (!m_scriptDone) {
+            m_scriptDone = true;
+            runScript();
+        }
+        if (m_view == View::Stencil) {
+            drawStencilView();
+            return;
+        }
+        drawShaded();
+        drawSelection();
+    }
+
+    Camera& activeCamera() override { return m_cameras.active(); }
+    void toggleCamera() override { m_cameras.toggle(); }
+
+    bool keyPressed(unsigned char key) override {
+        switch (key) {
+        case 'u': std::printf(m_history.undo(m_scene) ? "undo\n" : "nothing to undo\n"); return true;
+        case 'r': std::printf(m_history.redo(m_scene) ? "redo\n" : "nothing to redo\n"); return true;
+        case 'm': {
+            const EditorObject* object = m_scene.findObject(m_selected);
+            if (!object) return false;
+            auto it = std::find_if(m_scene.materials.begin(), m_scene.materials.end(),
+                                   [&](const EditorMaterial& m) { return m.name == object->material; });
+            const std::size_t next = it == m_scene.materials.end() ? 0 : (it - m_scene.materials.begin() + 1) % m_scene.materials.size();
+            setMaterial(m_scene.materials[next].name);
+            std::printf("%s: material %s\n", object->name.c_str(), m_scene.materials[next].name.c_str());
+            return true;
+        }
+        case 'x': deleteSelection(); return true;
+        case 'v':
+            m_view = m_view == View::Shaded ? View::Stencil : View::Shaded;
+            std::printf("view: %s\n", m_view == View::Shaded ? "shaded" : "stencil");
+            return true;
+        default: return false;
+        }
+    }
+
+    bool handleEvent(const InputEvent& event) override {
+        if (event.button != MouseButton::Left && event.type != InputEvent::Type::MouseMove) return false;
+        if (event.type == InputEvent::Type::MouseDown) {
+            m_pressPixel = event.position;
+            m_dragAxis = gizmoAxisNear(event.position);
+            if (m_dragAxis < 0) return false;   // not on an arrow: the camera turns, or a click selects
+            startDrag(event.position);
+            return true;
+        }
+        if (event.type == InputEvent::Type::MouseMove && m_dragAxis >= 0) {
+            dragTo(event.position);
+            return true;
+        }
+        if (event.type == InputEvent::Type::MouseUp) {
+            if (m_dragAxis >= 0) {
+                m_history.endMerge();
+                m_dragAxis = -1;
+                return true;
+            }
+            if (glm::length(event.position - m_pressPixel) < 3.0f) {   // a click, not a camera drag
+                m_pendingClick = event.position;
+                return true;
+            }
+        }
+        return false;
+    }
+
+    std::vector<std::string> keyHelp() const override {
+        return {"click        select the object under the mouse (stencil pick)",
+                "drag arrow   move the selection along the gizmo's x, y or z arrow",
+                "u / r        undo / redo",
+                "m / x        next material for the selection / delete it",
+                "v            switch view: shaded / the stencil pick pass"};
+    }
+
+    const EditorScene& scene() const { return m_scene; }
+    const EditHistory& history() const { return m_history; }
+
+private:
+    enum class View { Shaded, Stencil };
+
+    struct Command {
+        enum class Kind { Select, Drag, Material, Delete, Undo, Redo, Save, Tick } kind = Kind::Select;
+        glm::vec2 from{0.0f}, to{0.0f};
+        int axis = 0;
+        std::string name;
+        double seconds = 0.0;
+    };
+
+    // --- the script ------------------------------------------------------------
+
+    std::vector<Command> parseCommands(const CaseSpec& spec) const {
+        std::vector<Command> commands;
+        std::stringstream all(spec.getString("commands"));
+        std::string text;
+        while (std::getline(all, text, ';')) {
+            std::istringstream words(text);
+            std::string verb;
+            if (!(words >> verb)) continue;
+            Command command;
+            const auto bad = [&](const std::string& expected) {
+                spec.reject("commands", "in '" + text + "': " + expected);
+            };
+            const auto pixel = [&](glm::vec2& p) {
+                if (!(words >> p.x >> p.y)) bad("expected a pixel x y");
+                if (p.x < 0 || p.y < 0 || p.x >= spec.width || p.y >= spec.height)
+                    bad("the pixel lies outside the " + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " picture");
+            };
+            if (verb == "select") {
+                command.kind = Command::Kind::Select;
+                pixel(command.from);
+            } else if (verb == "drag") {
+                command.kind = Command::Kind::Drag;
+                std::string axis;
+                words >> axis;
+                if (axis != "x" && axis != "y" && axis != "z") bad("drag needs an axis x, y or z, then two pixels");
+                command.axis = axis[0] - 'x';
+                pixel(command.from);
+                pixel(command.to);
+            } else if (verb == "material") {
+                command.kind = Command::Kind::Material;
+                if (!(words >> command.name)) bad("material needs a material's name");
+                if (!editorLabScene().findMaterial(command.name)) bad("no material '" + command.name + "'");
+            } else if (verb == "delete" || verb == "undo" || verb == "redo") {
+                command.kind = verb == "delete" ? Command::Kind::Delete : verb == "undo" ? Command::Kind::Undo : Command::Kind::Redo;
+            } else if (verb == "save") {
+                command.kind = Command::Kind::Save;
+                std::string at;
+                if (!(words >> command.name >> at >> command.seconds) || at != "at" ||
+                    (command.name != "diffuse" && command.name != "stripes") || !(command.seconds >= 0.0 && command.seconds <= 60.0))
+                    bad("expected 'save diffuse at T' or 'save stripes at T', T in [0, 60] seconds");
+            } else if (verb == "tick") {
+                command.kind = Command::Kind::Tick;
+                if (!(words >> command.seconds) || !(command.seconds >= 0.0 && command.seconds <= 60.0))
+                    bad("tick needs a time in [0, 60] seconds");
+            } else {
+                bad("unknown command '" + verb + "' (select, drag, material, delete, undo, redo, save, tick)");
+            }
+            std::string extra;
+            if (words >> extra) bad("unexpected '" + extra + "' at the end");
+            commands.push_back(command);
+        }
+        return commands;
+    }
+
+    void runScript() {
+        const glm::vec2 toWindow = glm::vec2(m_size) / m_scriptFrame;
+        for (const Command& command : m_script) {
+            switch (command.kind) {
+            case Command::Kind::Select: select(command.from * toWindow); break;
+            case Command::Kind::Drag: {
+                if (!m_scene.findObject(m_selected)) break;
+                m_dragAxis = command.axis;
+                startDrag(command.from * toWindow);
+                for (int step = 1; step <= 4; ++step)
+                    dragTo(glm::mix(command.from, command.to, step / 4.0f) * toWindow);
+                m_history.endMerge();
+                m_dragAxis = -1;
+                break;
+            }
+            case Command::Kind::Material: setMaterial(command.name); break;
+            case Command::Kind::Delete: deleteSelection(); break;
+            case Command::Kind::Undo: m_history.undo(m_scene); break;
+            case Command::Kind::Redo: m_history.redo(m_scene); break;
+            case Command::Kind::Save: saveFile(command.name, command.seconds); break;
+            case Command::Kind::Tick: tick(command.seconds); break;
+            }
+        }
+    }
+
+    // --- edits -------------------------------------------------------------------
+
+    void reset() {
+        m_scene = editorLabScene();
+        m_history = EditHistory();
+        m_selected = 0;
+        m_dragAxis = -1;
+        m_pendingClick.reset();
+        m_fileVersions = {{"diffuse", 0}, {"stripes", 0}};
+        m_changes.clear();
+        m_panelFiles = {0, 0};
+        m_panelLoadedAt = -1.0;   // loaded before the clock starts at 0
+        m_panelTexture.reset();
+    }
+
+    void select(glm::vec2 pixel) {
+        const StencilReadback stencil = drawPickPass();
+        const int index = objectAtPixel(stencil, glm::ivec2(pixel), m_pickRadius);
+        m_selected = index >= 0 && index < static_cast<int>(m_scene.objects.size()) ? m_scene.objects[index].id : 0;
+        const EditorObject* object = m_scene.findObject(m_selected);
+        std::printf("%s\n", object ? ("selected " + object->name).c_str() : "selected nothing");
+    }
+
+    void setMaterial(const std::string& name) {
+        const EditorObject* object = m_scene.findObject(m_selected);
+        if (!object) return;
+        const std::uint32_t id = object->id;
+        const std::string before = object->material;
+        m_history.perform(m_scene, {"material of " + object->name,
+                                    [id, name](EditorScene& s) { if (EditorObject* o = s.findObject(id)) o->material = name; },
+                                    [id, before](EditorScene& s) { if (EditorObject* o = s.findObject(id)) o->material = before; },
+                                    ""});
+    }
+
+    void deleteSelection() {
+        const auto it = std::find_if(m_scene.objects.begin(), m_scene.objects.end(),
+                                     [&](const EditorObject& o) { return o.id == m_selected; });
+        if (it == m_scene.objects.end()) return;
+        const EditorObject copy = *it;
+        const std::size_t index = static_cast<std::size_t>(it - m_scene.objects.begin());
+        m_history.perform(m_scene, {"delete " + copy.name, [id = copy.id](EditorScene& s) { s.removeObject(id); },
+                                    [copy, index](EditorScene& s) {
+                                        s.objects.insert(s.objects.begin() + static_cast<long>(std::min(index, s.objects.size())), copy);
+                                    },
+                                    ""});
+        m_selected = 0;
+    }
+
+    void startDrag(glm::vec2 pixel) {
+        const EditorObject* object = m_scene.findObject(m_selected);
+        if (!object) return;
+        m_dragStart = object->position;
+        m_pressRay = rayThrough(pixel);
+    }
+
+    void dragTo(glm::vec2 pixel) {
+        const EditorObject* object = m_scene.findObject(m_selected);
+        if (!object) return;
+        glm::vec3 axis(0.0f);
+        axis[m_dragAxis] = 1.0f;
+        const glm::vec3 to = dragAlongAxis(m_dragStart, axis, m_pressRay, rayThrough(pixel));
+        const glm::vec3 from = object->position;
+        const std::uint32_t id = object->id;
+        m_history.perform(m_scene, {"move " + object->name,
+                                    [id, to](EditorScene& s) { if (EditorObject* o = s.findObject(id)) o->position = to; },
+                                    [id, from](EditorScene& s) { if (EditorObject* o = s.findObject(id)) o->position = from; },
+                                    "move " + std::to_string(id)});
+    }
+
+    // --- hot reload ----------------------------------------------------------------
+    // The panel's texture is built from two files, its diffuse colours and its
+    // stripes; each save writes a new version of one. The files are simulated so
+    // that pictures do not depend on the file system's clock; stoa-editor watches
+    // real files (AssetCache).
+
+    static std::string panelFile(const std::string& name) { return "/lab11/panel_" + name + ".png"; }
+
+    void saveFile(const std::string& name, double seconds) {
+        ++m_fileVersions[name];
+        m_changes.push_back({panelFile(name), seconds});
+    }
+
+    void tick(double now) {
+        const std::vector<AssetFiles> assets = {{"panel", {panelFile("diffuse"), panelFile("stripes")}, m_panelLoadedAt}};
+        for (const std::string& name : assetsToReload(m_changes, assets, now, m_debounce)) {
+            if (name != "panel") continue;
+            m_panelFiles = {m_fileVersions["diffuse"], m_fileVersions["stripes"]};
+            m_panelLoadedAt = now;
+            m_panelTexture.reset();
+            std::printf("reloaded panel at %.2f s (diffuse v%d, stripes v%d)\n", now, m_panelFiles[0], m_panelFiles[1]);
+        }
+    }
+
+    const Texture2D& panelTexture() {
+        if (!m_panelTexture) {
+            static const glm::vec3 colours[] = {{0.9f, 0.85f, 0.7f}, {0.3f, 0.55f, 0.9f}, {0.9f, 0.3f, 0.35f}, {0.35f, 0.8f, 0.4f}};
+            const glm::vec3 paper = colours[m_panelFiles[0] % 4];
+            const int stripes = 2 + 2 * (m_panelFiles[1] % 4);
+            Image image(64, 64, 4);
+            for (int y = 0; y < 64; ++y)
+                for (int x = 0; x < 64; ++x) {
+                    const bool ink = ((x * stripes) / 64) % 2 == 1;
+                    const glm::vec3 c = ink ? paper * 0.35f : paper;
+                    std::uint8_t* p = image.data() + (y * 64 + x) * 4;
+                    p[0] = static_cast<std::uint8_t>(c.r * 255.0f);
+                    p[1] = static_cast<std::uint8_t>(c.g * 255.0f);
+                    p[2] = static_cast<std::uint8_t>(c.b * 255.0f);
+                    p[3] = 255;
+                }
+            TextureOptions options;
+            options.mipmaps = false;
+            options.linear = false;
+            m_panelTexture = std::make_unique<Texture2D>(Texture2D::fromImage(image, options));
+        }
+        return *m_panelTexture;
+    }
+
+    // --- drawing -------------------------------------------------------------------
+
+    void updateFrame(const Camera& camera) {
+        Scene lights;
+        lights.ambient = m_scene.ambient;
+        lights.directionalLights = {DirectionalLight{m_scene.sunDirection, m_scene.sunColor}};
+        for (const EditorLight& light : m_scene.lights) {
+            if (!light.on) continue;
+            PointLight point;
+            point.position = light.position;
+            point.color = light.color;
+            point.attenuation = glm::vec3(1.0f, 4.5f / light.radius, 75.0f / (light.radius * light.radius));
+            lights.pointLights.push_back(point);
+        }
+        m_aspect = static_cast<float>(m_size.x) / static_cast<float>(m_size.y);
+        m_frame->update(camera, m_aspect, lights);
+        m_frame->bind();
+        m_viewProjection = camera.projectionMatrix(m_aspect) * camera.viewMatrix();
+    }
+
+    glm::mat4 modelOf(const EditorObject& object) const {
+        return modelMatrix(object.position, object.rotationDegrees, object.scale);
+    }
+
+    const GpuMesh& meshOf(const EditorObject& object) const {
+        const auto it = m_meshes.find(object.mesh);
+        if (it == m_meshes.end()) throw InputError(object.name, 0, "the editor has no mesh '" + object.mesh + "' (shape:cube, shape:sphere, shape:cylinder, shape:plane)");
+        return *it->second;
+    }
+
+    /// The pick pass: each object drawn with stencil value index + 1 over 0,
+    /// colour writes off, into a target of the window's size; read back.
+    StencilReadback drawPickPass() {
+        if (!m_pickTarget || m_pickTarget->width() != m_size.x || m_pickTarget->height() != m_size.y)
+            m_pickTarget = std::make_unique<Framebuffer>(m_size.x, m_size.y);
+        const GLuint previous = StateCache::current().drawFramebuffer();
+        PassDescription pass = passInto(*m_pickTarget);
+        pass.state.colorMask = {false, false, false, false};
+        pass.state.stencil.test = true;
+        pass.state.stencil.pass = GL_REPLACE;
+        pass.clear.depth = pass.clear.stencil = true;
+        beginPass(pass);
+        m_flatProgram->use();
+        const std::size_t count = std::min<std::size_t>(m_scene.objects.size(), kMaxObjects);
+        for (std::size_t i = 0; i < count; ++i) {
+            RenderState state = pass.state;
+            state.stencil.ref = static_cast<int>(i + 1);
+            StateCache::current().apply(state);
+            m_flatProgram->set("uModel", modelOf(m_scene.objects[i]));
+            meshOf(m_scene.objects[i]).draw();
+        }
+        StencilReadback readback;
+        readback.width = m_size.x;
+        readback.height = m_size.y;
+        readback.values.resize(static_cast<std::size_t>(m_size.x) * m_size.y);
+        m_pickTarget->readPixels(-1, 0, 0, m_size.x, m_size.y, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, readback.values.data());
+        StateCache::current().bindFramebuffer(previous);
+        return readback;
+    }
+
+    void drawShaded() {
+        if (m_pendingClick) {   // a click in the window: pick now that the frame's camera is set
+            select(*m_pendingClick);
+            m_pendingClick.reset();
+        }
+        PassDescription pass = passInto(m_size);
+        pass.clear.color = pass.clear.depth = pass.clear.stencil = true;
+        pass.clear.colorValue = glm::vec4(0.09f, 0.1f, 0.13f, 1.0f);
+        pass.state.cull = CullMode::None;
+        beginPass(pass);
+        m_litProgram->use();
+        for (const EditorObject& object : m_scene.objects) {
+            const EditorMaterial* found = m_scene.findMaterial(object.material);
+            Material material;
+            if (found) {
+                material.ambient = found->diffuse;
+                material.diffuse = found->diffuse;
+                material.specular = found->specular;
+                material.shininess = found->shininess;
+            }
+            DrawItem item;
+            item.mesh = &meshOf(object);
+            item.model = modelOf(object);
+            item.normalMatrix = glm::inverseTranspose(glm::mat3(item.model));
+            item.material = &material;
+            item.diffuseMap = found && found->diffuseMap == "panel" ? &panelTexture() : nullptr;
+            m_litUniforms->apply(item);
+            item.mesh->draw();
+        }
+    }
+
+    /// The selection: its outline (the object a little larger, drawn where the
+    /// stencil does not hold it) and its gizmo's three arrows.
+    void drawSelection() {
+        const EditorObject* object = m_scene.findObject(m_selected);
+        if (!object) return;
+        RenderState mark;
+        mark.cull = CullMode::None;
+        mark.colorMask = {false, false, false, false};
+        mark.depth.test = false;
+        mark.stencil.test = true;
+        mark.stencil.ref = 1;
+        mark.stencil.pass = GL_REPLACE;
+        beginPass(passInto(m_size, mark));
+        m_flatProgram->use();
+        m_flatProgram->set("uModel", modelOf(*object));
+        meshOf(*object).draw();
+
+        RenderState outline = RenderState::overlay();
+        outline.stencil.test = true;
+        outline.stencil.func = GL_NOTEQUAL;
+        outline.stencil.ref = 1;
+        beginPass(passInto(m_size, outline));
+        // 0.06 world units wider along each of the object's axes (its meshes are 1 unit across).
+        const glm::vec3 grow = glm::vec3(1.0f) + glm::min(glm::vec3(0.06f) / glm::max(glm::abs(object->scale), glm::vec3(1e-3f)),
+                                                          glm::vec3(2.0f));
+        m_flatProgram->set("uModel", modelOf(*object) * glm::scale(glm::mat4(1.0f), grow));
+        m_flatProgram->set("uColor", glm::vec3(1.0f, 0.62f, 0.1f));
+        meshOf(*object).draw();
+
+        DebugLines arrows;
+        const float length = gizmoLength(*object);
+        const glm::vec3 colours[3] = {{0.95f, 0.2f, 0.2f}, {0.3f, 0.9f, 0.3f}, {0.25f, 0.45f, 1.0f}};
+        for (int axis = 0; axis < 3; ++axis) {
+            glm::vec3 direction(0.0f);
+            direction[axis] = 1.0f;
+            arrows.line(object->position, object->position + direction * length, colours[axis]);
+        }
+        beginPass(passInto(m_size, RenderState::overlay()));
+        m_lines->draw(arrows, m_viewProjection);
+    }
+
+    void drawStencilView() {
+        const StencilReadback stencil = drawPickPass();
+        int selectedValue = -1;   // drawn white
+        for (std::size_t i = 0; i < m_scene.objects.size(); ++i)
+            if (m_scene.objects[i].id == m_selected) selectedValue = static_cast<int>(i + 1);
+        Image image(m_size.x, m_size.y, 4);
+        for (int y = 0; y < m_size.y; ++y)
+            for (int x = 0; x < m_size.x; ++x) {
+                const std::uint8_t value = stencil.values[static_cast<std::size_t>(m_size.y - 1 - y) * m_size.x + x];
+                std::uint8_t* p = image.data() + (static_cast<std::size_t>(y) * m_size.x + x) * 4;
+                // Neighbouring values far apart in hue: value * golden angle.
+                const float hue = std::fmod(value * 0.618034f, 1.0f) * 6.0f;
+                const glm::vec3 c = value == selectedValue ? glm::vec3(1.0f)
+                                    : value == 0 ? glm::vec3(0.0f)
+                                               : glm::clamp(glm::abs(glm::mod(hue + glm::vec3(0.0f, 4.0f, 2.0f), 6.0f) - 3.0f) - 1.0f,
+                                                            0.0f, 1.0f);
+                p[0] = static_cast<std::uint8_t>(c.r * 255.0f);
+                p[1] = static_cast<std::uint8_t>(c.g * 255.0f);
+                p[2] = static_cast<std::uint8_t>(c.b * 255.0f);
+                p[3] = 255;
+            }
+        TextureOptions options;
+        options.mipmaps = false;
+        options.linear = false;
+        const Texture2D picture = Texture2D::fromImage(image, options);
+        picture.bind(0);
+        m_imageProgram->set("uImage", 0);
+        m_overlay->draw(*m_imageProgram, {0, 0, m_size.x, m_size.y});
+    }
+
+    // --- the mouse -------------------------------------------------------------------
+
+    /// The mouse ray through `pixel` (window pixels from the top-left corner).
+    Line rayThrough(glm::vec2 pixel) const {
+        const glm::mat4 inverse = glm::inverse(m_viewProjection);
+        const glm::vec2 ndc((pixel.x + 0.5f) / m_size.x * 2.0f - 1.0f, 1.0f - (pixel.y + 0.5f) / m_size.y * 2.0f);
+        const glm::vec4 nearPoint = inverse * glm::vec4(ndc, -1.0f, 1.0f);
+        const glm::vec4 farPoint = inverse * glm::vec4(ndc, 1.0f, 1.0f);
+        const glm::vec3 a = glm::vec3(nearPoint) / nearPoint.w;
+        const glm::vec3 b = glm::vec3(farPoint) / farPoint.w;
+        return {a, b - a};
+    }
+
+    float gizmoLength(const EditorObject& object) const {
+        return 0.6f + 0.5f * std::max(object.scale.x, std::max(object.scale.y, object.scale.z)) * (object.mesh == "shape:plane" ? 0.0f : 1.0f);
+    }
+
+    glm::vec2 toPixel(const glm::vec3& world) const {
+        const glm::vec4 clip = m_viewProjection * glm::vec4(world, 1.0f);
+        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+        return {(ndc.x + 1.0f) * 0.5f * m_size.x, (1.0f - ndc.y) * 0.5f * m_size.y};
+    }
+
+    /// The gizmo arrow within 10 pixels of `pixel` (0 x, 1 y, 2 z), or -1.
+    int gizmoAxisNear(glm::vec2 pixel) const {
+        const EditorObject* object = m_scene.findObject(m_selected);
+        if (!object) return -1;
+        int best = -1;
+        float bestDistance = 10.0f;
+        const glm::vec2 a = toPixel(object->position);
+        for (int axis = 0; axis < 3; ++axis) {
+            glm::vec3 direction(0.0f);
+            direction[axis] = 1.0f;
+            const glm::vec2 b = toPixel(object->position + direction * gizmoLength(*object));
+            const glm::vec2 ab = b - a;
+            const float t = glm::clamp(glm::dot(pixel - a, ab) / std::max(1e-6f, glm::dot(ab, ab)), 0.25f, 1.0f);
+            const float distance = glm::length(pixel - (a + t * ab));
+            if (distance < bestDistance) {
+                bestDistance = distance;
+                best = axis;
+            }
+        }
+        return best;
+    }
+
+    CameraRig m_cameras;
+    EditorScene m_scene = editorLabScene();
+    EditHistory m_history;
+    std::uint32_t m_selected = 0;
+    View m_view = View::Shaded;
+    int m_pickRadius = 4;
+    double m_debounce = 0.25;
+    std::vector<Command> m_script;
+    glm::vec2 m_scriptFrame{1.0f};
+    bool m_scriptDone = false;
+
+    int m_dragAxis = -1;
+    glm::vec3 m_dragStart{0.0f};
+    Line m_pressRay;
+    glm::vec2 m_pressPixel{0.0f};
+    std::optional<glm::vec2> m_pendingClick;
+
+    std::map<std::string, int> m_fileVersions;
+    std::vector<FileChange> m_changes;
+    std::array<int, 2> m_panelFiles{0, 0};
+    double m_panelLoadedAt = -1.0;
+    std::unique_ptr<Texture2D> m_panelTexture;
+
+    glm::ivec2 m_size{1};
+    float m_aspect = 1.0f;
+    glm::mat4 m_viewProjection{1.0f};
+    const Program* m_litProgram = nullptr;
+    const Program* m_flatProgram = nullptr;
+    const Program* m_imageProgram = nullptr;
+    const Program* m_lineProgram = nullptr;
+    std::unique_ptr<ObjectUniforms> m_litUniforms;
+    std::unique_ptr<FrameUniforms> m_frame;
+    std::unique_ptr<DebugLineRenderer> m_lines;
+    std::map<std::string, std::shared_ptr<GpuMesh>> m_meshes;
+    std::unique_ptr<Framebuffer> m_pickTarget;
+    std::unique_ptr<TextureOverlay> m_overlay;
+};
+
+} // namespace stoa

@@ -1,0 +1,9 @@
+#version 330 core
+// One colour for every fragment (flat.vert).
+
+uniform vec3 uColor;
+out vec4 fragColor;
+
+void main() {
+    fragColor = vec4(uColor, 1.0);
+}
