@@ -28,6 +28,9 @@
 
 #include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/InputError.hpp>
+#include <stoa/core/Paths.hpp>
+#include <stoa/editor/EditorAssets.hpp>
+#include <stoa/editor/EditorSceneFile.hpp>
 #include <stoa/geometry/DebugLines.hpp>
 #include <stoa/geometry/Material.hpp>
 #include <stoa/geometry/Shapes.hpp>
@@ -53,6 +56,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -61,6 +65,12 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#if __has_include(<imgui.h>)
+#include <imgui.h>
+#include <imgui_stdlib.h>
+#define STOA_EDITOR_APP_IMGUI 1
+#endif
 
 namespace stoa {
 
@@ -124,20 +134,16 @@ public:
     static constexpr int kMaxObjects = 255;   // stencil values 1..255
 
     void initialize(LabResources& resources) override {
-        m_litProgram = &resources.loadProgram("editor/lit.vert", "editor/lit.frag");
+        resources.loadProgram("editor/lit.vert", "editor/lit.frag");   // listed for the app's stub check
         m_flatProgram = &resources.loadProgram("editor/flat.vert", "editor/flat.frag");
         m_imageProgram = &resources.loadProgram("basic/image.vert", "basic/image.frag");
         m_lineProgram = &resources.loadProgram("debug/lines.vert", "debug/lines.frag");
-        for (const Program* program : {m_litProgram, m_flatProgram})
-            program->bindUniformBlock(FrameUniforms::kBlockName, FrameUniforms::kBinding);
+        m_flatProgram->bindUniformBlock(FrameUniforms::kBlockName, FrameUniforms::kBinding);
         m_overlay = std::make_unique<TextureOverlay>();
-        m_litUniforms = std::make_unique<ObjectUniforms>(*m_litProgram);
         m_frame = std::make_unique<FrameUniforms>();
         m_lines = std::make_unique<DebugLineRenderer>(*m_lineProgram);
-        m_meshes["shape:cube"] = std::make_shared<GpuMesh>(shapes::cube(1.0f));
-        m_meshes["shape:sphere"] = std::make_shared<GpuMesh>(shapes::sphere(0.5f, 32, 16));
-        m_meshes["shape:cylinder"] = std::make_shared<GpuMesh>(shapes::cylinder(0.5f, 1.0f, 32));
-        m_meshes["shape:plane"] = std::make_shared<GpuMesh>(shapes::plane(1.0f, 1));
+        m_assets = std::make_unique<EditorAssets>();
+        m_assets->setReloadDispatch(assetsToReload);   // yours, for the files of a scene file's assets
     }
 
     void loadCase(const CaseSpec& spec) override {
@@ -146,6 +152,8 @@ public:
                                                                                                   : View::Shaded;
         m_pickRadius = spec.getIntInRange("pick_radius", 0, 8, 4);
         m_debounce = spec.getNumberInRange("debounce", 0.0, 2.0, 0.25);
+        m_sceneFile.clear();
+        if (spec.has("scene")) m_sceneFile = resolveScene(spec);
         m_script = spec.has("commands") ? parseCommands(spec) : std::vector<Command>{};
         m_scriptFrame = glm::vec2(spec.width, spec.height);
         m_scriptDone = false;
@@ -160,6 +168,7 @@ public:
             m_scriptDone = true;
             runScript();
         }
+        if (!m_sceneFile.empty()) reloadChangedAssets();
         if (m_view == View::Stencil) {
             drawStencilView();
             return;
@@ -173,8 +182,8 @@ public:
 
     bool keyPressed(unsigned char key) override {
         switch (key) {
-        case 'u': std::printf(m_history.undo(m_scene) ? "undo\n" : "nothing to undo\n"); return true;
-        case 'r': std::printf(m_history.redo(m_scene) ? "redo\n" : "nothing to redo\n"); return true;
+        case 'u': log(m_history.undo(m_scene) ? "undo" : "nothing to undo"); return true;
+        case 'r': log(m_history.redo(m_scene) ? "redo" : "nothing to redo"); return true;
         case 'm': {
             const EditorObject* object = m_scene.findObject(m_selected);
             if (!object) return false;
@@ -182,10 +191,14 @@ public:
                                    [&](const EditorMaterial& m) { return m.name == object->material; });
             const std::size_t next = it == m_scene.materials.end() ? 0 : (it - m_scene.materials.begin() + 1) % m_scene.materials.size();
             setMaterial(m_scene.materials[next].name);
-            std::printf("%s: material %s\n", object->name.c_str(), m_scene.materials[next].name.c_str());
+            log(object->name + ": material " + m_scene.materials[next].name);
             return true;
         }
         case 'x': deleteSelection(); return true;
+        case 19:   // Ctrl+S
+            if (m_sceneFile.empty()) return false;
+            save();
+            return true;
         case 'v':
             m_view = m_view == View::Shaded ? View::Stencil : View::Shaded;
             std::printf("view: %s\n", m_view == View::Shaded ? "shaded" : "stencil");
@@ -221,12 +234,37 @@ public:
         return false;
     }
 
+    bool uiPanelAtStart() const override { return !m_sceneFile.empty(); }
+
+    void drawUi() override {
+#ifdef STOA_EDITOR_APP_IMGUI
+        ImGui::Text("%s", m_sceneFile.empty() ? "lab 11's scene" : m_sceneFile.filename().string().c_str());
+        ImGui::Text("%zu objects, %zu lights; %zu edits to undo, %zu to redo", m_scene.objects.size(), m_scene.lights.size(),
+                    m_history.undoCount(), m_history.redoCount());
+        if (ImGui::Button("Undo (u)")) keyPressed('u');
+        ImGui::SameLine();
+        if (ImGui::Button("Redo (r)")) keyPressed('r');
+        if (!m_sceneFile.empty()) {
+            ImGui::SameLine();
+            if (ImGui::Button("Save (Ctrl+S)")) save();
+        }
+        bool stencil = m_view == View::Stencil;
+        if (ImGui::Checkbox("show the stencil pick pass (v)", &stencil)) m_view = stencil ? View::Stencil : View::Shaded;
+        drawScenePanel();
+        drawInspectorPanel();
+        drawAssetPanel();
+        drawShaderPanel();
+        drawLogPanel();
+#endif
+    }
+
     std::vector<std::string> keyHelp() const override {
         return {"click        select the object under the mouse (stencil pick)",
                 "drag arrow   move the selection along the gizmo's x, y or z arrow",
                 "u / r        undo / redo",
                 "m / x        next material for the selection / delete it",
-                "v            switch view: shaded / the stencil pick pass"};
+                "v            switch view: shaded / the stencil pick pass",
+                "Ctrl+S       save the scene file (stoa-editor)"};
     }
 
     const EditorScene& scene() const { return m_scene; }
@@ -242,6 +280,171 @@ private:
         std::string name;
         double seconds = 0.0;
     };
+
+    // --- saving and the panels (stoa-editor) -----------------------------------------
+
+    void save() {
+        const OrbitCamera& orbit = m_cameras.orbit;
+        m_scene.camera = {orbit.lookTarget(), orbit.distance(), orbit.yawDegrees(), orbit.pitchDegrees()};
+        try {
+            saveEditorScene(m_scene, m_sceneFile);
+            log("saved " + m_sceneFile.string());
+        } catch (const std::exception& error) {
+            log(std::string("not saved: ") + error.what());
+        }
+    }
+
+#ifdef STOA_EDITOR_APP_IMGUI
+    /// Every object and light; a click selects.
+    void drawScenePanel() {
+        ImGui::SetNextWindowPos(ImVec2(10.0f, 180.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(200.0f, 200.0f), ImGuiCond_FirstUseEver);
+        ImGui::Begin("Scene");
+        for (const EditorObject& object : m_scene.objects) {
+            ImGui::PushID(static_cast<int>(object.id));
+            if (ImGui::Selectable(object.name.c_str(), object.id == m_selected)) m_selected = object.id;
+            ImGui::PopID();
+        }
+        ImGui::Separator();
+        for (const EditorLight& light : m_scene.lights) {
+            ImGui::PushID(static_cast<int>(light.id));
+            bool on = light.on;
+            if (ImGui::Checkbox(light.name.c_str(), &on)) {
+                const std::uint32_t id = light.id;
+                m_history.perform(m_scene, {std::string(on ? "switch on " : "switch off ") + light.name,
+                                            [id, on](EditorScene& s) { if (EditorLight* l = s.findLight(id)) l->on = on; },
+                                            [id, on](EditorScene& s) { if (EditorLight* l = s.findLight(id)) l->on = !on; }, ""});
+            }
+            ImGui::PopID();
+        }
+        ImGui::End();
+    }
+
+    /// A vec3 of the selection edited by dragging: one undo step per drag.
+    void editVector(const char* label, glm::vec3 EditorObject::*member, float speed) {
+        EditorObject* object = m_scene.findObject(m_selected);
+        glm::vec3 value = object->*member;
+        if (ImGui::DragFloat3(label, &value.x, speed)) {
+            const std::uint32_t id = object->id;
+            const glm::vec3 before = object->*member;
+            m_history.perform(m_scene, {std::string(label) + " of " + object->name,
+                                        [id, member, value](EditorScene& s) { if (EditorObject* o = s.findObject(id)) o->*member = value; },
+                                        [id, member, before](EditorScene& s) { if (EditorObject* o = s.findObject(id)) o->*member = before; },
+                                        std::string(label) + " " + std::to_string(id)});
+        }
+        if (ImGui::IsItemDeactivatedAfterEdit()) m_history.endMerge();
+    }
+
+    void drawInspectorPanel() {
+        ImGui::SetNextWindowPos(ImVec2(10.0f, 390.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(330.0f, 150.0f), ImGuiCond_FirstUseEver);
+        ImGui::Begin("Inspector");
+        EditorObject* object = m_scene.findObject(m_selected);
+        if (!object) {
+            ImGui::TextDisabled("nothing selected: click an object");
+        } else {
+            ImGui::Text("%s (id %u, %s)", object->name.c_str(), object->id, object->mesh.c_str());
+            editVector("position", &EditorObject::position, 0.02f);
+            editVector("rotation", &EditorObject::rotationDegrees, 0.5f);
+            editVector("scale", &EditorObject::scale, 0.01f);
+            if (ImGui::BeginCombo("material", object->material.c_str())) {
+                for (const EditorMaterial& material : m_scene.materials)
+                    if (ImGui::Selectable(material.name.c_str(), material.name == object->material)) setMaterial(material.name);
+                ImGui::EndCombo();
+            }
+            if (ImGui::Button("Delete (x)")) deleteSelection();
+        }
+        ImGui::End();
+    }
+
+    /// Shapes and models: spawn one at the camera's target.
+    void drawAssetPanel() {
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        ImGui::SetNextWindowPos(ImVec2(display.x - 230.0f, 10.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(220.0f, 200.0f), ImGuiCond_FirstUseEver);
+        ImGui::Begin("Assets");
+        ImGui::TextDisabled("click to spawn at the view's centre");
+        if (m_modelNames.empty()) {
+            m_modelNames = EditorAssets::shapeNames();
+            for (const std::string& name : m_assets->modelNames()) m_modelNames.push_back(name);
+        }
+        for (const std::string& name : m_modelNames)
+            if (ImGui::Selectable(name.c_str())) spawn(name);
+        ImGui::End();
+    }
+
+    void spawn(const std::string& mesh) {
+        if (m_scene.objects.size() >= static_cast<std::size_t>(kMaxObjects)) {
+            log("not spawned: the stencil pick tells at most 255 objects apart");
+            return;
+        }
+        EditorObject object;
+        object.id = m_scene.nextId();
+        object.name = mesh.substr(mesh.find_last_of(":/") + 1) + " " + std::to_string(object.id);
+        object.mesh = mesh;
+        object.material = m_scene.materials.empty() ? std::string() : m_scene.materials.front().name;
+        object.position = m_cameras.orbit.lookTarget();
+        if (m_scene.materials.empty()) {
+            log("not spawned: the scene has no material to give it");
+            return;
+        }
+        m_history.perform(m_scene, {"spawn " + object.name, [object](EditorScene& s) { s.objects.push_back(object); },
+                                    [id = object.id](EditorScene& s) { s.removeObject(id); }, ""});
+        m_selected = object.id;
+    }
+
+    /// The selection's material's fragment shader, recompiled as you type;
+    /// an error shows at its line and the last good program keeps drawing.
+    void drawShaderPanel() {
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        ImGui::SetNextWindowPos(ImVec2(display.x - 470.0f, 220.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(460.0f, std::max(200.0f, display.y - 350.0f)), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);   // open it with its arrow
+        ImGui::Begin("Shader");
+        const EditorObject* object = m_scene.findObject(m_selected);
+        const EditorMaterial* material = object ? m_scene.findMaterial(object->material) : nullptr;
+        const std::string name = material && !material->shader.empty() ? material->shader : EditorAssets::kDefaultProgram;
+        ImGui::Text("%s.frag%s", name.c_str(), object ? "" : " (select an object for its material's)");
+        try {
+            LiveShader& shader = m_assets->liveShader(name);
+            if (m_shaderName != name) {
+                m_shaderName = name;
+                m_shaderText = shader.fragmentText();
+            }
+            if (ImGui::InputTextMultiline("##glsl", &m_shaderText, ImVec2(-1.0f, -60.0f), ImGuiInputTextFlags_AllowTabInput))
+                m_shaderEdited = std::chrono::steady_clock::now();
+            if (m_shaderEdited && std::chrono::steady_clock::now() - *m_shaderEdited > std::chrono::milliseconds(300)) {
+                m_shaderEdited.reset();
+                if (shader.setFragmentText(m_shaderText)) log("shader " + name + ": compiled");
+                else log("shader " + name + ": " + shader.error());
+            }
+            if (!shader.error().empty()) {
+                ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "line %d: %s", shader.errorLine(), shader.error().c_str());
+                ImGui::TextDisabled("drawing with the last program that compiled");
+            } else if (ImGui::Button("Save to file")) {
+                try {
+                    shader.saveToFile();
+                    log("saved " + shader.fragmentFile().string());
+                } catch (const std::exception& error) {
+                    log(std::string("not saved: ") + error.what());
+                }
+            }
+        } catch (const std::exception& error) {
+            ImGui::TextWrapped("cannot edit %s: %s", name.c_str(), error.what());
+        }
+        ImGui::End();
+    }
+
+    void drawLogPanel() {
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        ImGui::SetNextWindowPos(ImVec2(350.0f, display.y - 120.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(std::max(200.0f, display.x - 360.0f), 110.0f), ImGuiCond_FirstUseEver);
+        ImGui::Begin("Log");
+        for (const std::string& line : m_log) ImGui::TextUnformatted(line.c_str());
+        if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) ImGui::SetScrollHereY(1.0f);
+        ImGui::End();
+    }
+#endif
 
     // --- the script ------------------------------------------------------------
 
@@ -326,8 +529,20 @@ private:
 
     // --- edits -------------------------------------------------------------------
 
+    std::filesystem::path resolveScene(const CaseSpec& spec) const {
+        const std::string name = spec.getString("scene");
+        std::error_code error;
+        for (const std::filesystem::path& candidate :
+             {std::filesystem::path(name), std::filesystem::path(spec.file).parent_path() / name, paths::assetsDir() / "scenes" / name})
+            if (std::filesystem::is_regular_file(candidate, error)) return std::filesystem::absolute(candidate).lexically_normal();
+        spec.reject("scene", "no scene file '" + name + "' (looked as given, next to the cases file and in " +
+                                 (paths::assetsDir() / "scenes").string() + ")");
+        return {};
+    }
+
     void reset() {
-        m_scene = editorLabScene();
+        m_scene = m_sceneFile.empty() ? editorLabScene() : loadEditorScene(m_sceneFile);
+        if (m_assets) m_assets->setSceneFolder(m_sceneFile.empty() ? paths::assetsDir() : m_sceneFile.parent_path());
         m_history = EditHistory();
         m_selected = 0;
         m_dragAxis = -1;
@@ -344,7 +559,7 @@ private:
         const int index = objectAtPixel(stencil, glm::ivec2(pixel), m_pickRadius);
         m_selected = index >= 0 && index < static_cast<int>(m_scene.objects.size()) ? m_scene.objects[index].id : 0;
         const EditorObject* object = m_scene.findObject(m_selected);
-        std::printf("%s\n", object ? ("selected " + object->name).c_str() : "selected nothing");
+        log(object ? "selected " + object->name : "selected nothing");
     }
 
     void setMaterial(const std::string& name) {
@@ -413,7 +628,9 @@ private:
             m_panelFiles = {m_fileVersions["diffuse"], m_fileVersions["stripes"]};
             m_panelLoadedAt = now;
             m_panelTexture.reset();
-            std::printf("reloaded panel at %.2f s (diffuse v%d, stripes v%d)\n", now, m_panelFiles[0], m_panelFiles[1]);
+            char line[96];
+            std::snprintf(line, sizeof line, "reloaded panel at %.2f s (diffuse v%d, stripes v%d)", now, m_panelFiles[0], m_panelFiles[1]);
+            log(line);
         }
     }
 
@@ -441,6 +658,21 @@ private:
         return *m_panelTexture;
     }
 
+    /// A scene file's textures, models and programs: reloaded when their files
+    /// change (your assetsToReload() decides when), the log printed.
+    void reloadChangedAssets() {
+        const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_started).count();
+        m_assets->update(now);
+        for (const std::string& line : m_assets->takeLog()) log(line);
+    }
+
+    void log(const std::string& line) {
+        std::printf("%s\n", line.c_str());
+        std::fflush(stdout);
+        m_log.push_back(line);
+        if (m_log.size() > 200) m_log.erase(m_log.begin());
+    }
+
     // --- drawing -------------------------------------------------------------------
 
     void updateFrame(const Camera& camera) {
@@ -465,10 +697,8 @@ private:
         return modelMatrix(object.position, object.rotationDegrees, object.scale);
     }
 
-    const GpuMesh& meshOf(const EditorObject& object) const {
-        const auto it = m_meshes.find(object.mesh);
-        if (it == m_meshes.end()) throw InputError(object.name, 0, "the editor has no mesh '" + object.mesh + "' (shape:cube, shape:sphere, shape:cylinder, shape:plane)");
-        return *it->second;
+    void drawMeshes(const EditorObject& object) {
+        for (const GpuMesh* mesh : m_assets->meshes(object.mesh)) mesh->draw();
     }
 
     /// The pick pass: each object drawn with stencil value index + 1 over 0,
@@ -490,7 +720,7 @@ private:
             state.stencil.ref = static_cast<int>(i + 1);
             StateCache::current().apply(state);
             m_flatProgram->set("uModel", modelOf(m_scene.objects[i]));
-            meshOf(m_scene.objects[i]).draw();
+            drawMeshes(m_scene.objects[i]);
         }
         StencilReadback readback;
         readback.width = m_size.x;
@@ -511,7 +741,6 @@ private:
         pass.clear.colorValue = glm::vec4(0.09f, 0.1f, 0.13f, 1.0f);
         pass.state.cull = CullMode::None;
         beginPass(pass);
-        m_litProgram->use();
         for (const EditorObject& object : m_scene.objects) {
             const EditorMaterial* found = m_scene.findMaterial(object.material);
             Material material;
@@ -521,14 +750,25 @@ private:
                 material.specular = found->specular;
                 material.shininess = found->shininess;
             }
+            const Program& program = m_assets->program(found ? found->shader : std::string());
+            program.use();
+            // Locations per program; a reloaded or re-edited program is a new GL program.
+            auto& [programId, uniforms] = m_objectUniforms[&program];
+            if (!uniforms || programId != program.id()) {
+                uniforms = std::make_unique<ObjectUniforms>(program);
+                programId = program.id();
+            }
             DrawItem item;
-            item.mesh = &meshOf(object);
             item.model = modelOf(object);
             item.normalMatrix = glm::inverseTranspose(glm::mat3(item.model));
             item.material = &material;
-            item.diffuseMap = found && found->diffuseMap == "panel" ? &panelTexture() : nullptr;
-            m_litUniforms->apply(item);
-            item.mesh->draw();
+            if (found && !found->diffuseMap.empty())
+                item.diffuseMap = m_sceneFile.empty() && found->diffuseMap == "panel" ? &panelTexture() : m_assets->texture(found->diffuseMap);
+            for (const GpuMesh* mesh : m_assets->meshes(object.mesh)) {
+                item.mesh = mesh;
+                uniforms->apply(item);
+                mesh->draw();
+            }
         }
     }
 
@@ -547,7 +787,7 @@ private:
         beginPass(passInto(m_size, mark));
         m_flatProgram->use();
         m_flatProgram->set("uModel", modelOf(*object));
-        meshOf(*object).draw();
+        drawMeshes(*object);
 
         RenderState outline = RenderState::overlay();
         outline.stencil.test = true;
@@ -559,7 +799,7 @@ private:
                                                           glm::vec3(2.0f));
         m_flatProgram->set("uModel", modelOf(*object) * glm::scale(glm::mat4(1.0f), grow));
         m_flatProgram->set("uColor", glm::vec3(1.0f, 0.62f, 0.1f));
-        meshOf(*object).draw();
+        drawMeshes(*object);
 
         DebugLines arrows;
         const float length = gizmoLength(*object);
@@ -674,14 +914,20 @@ private:
     glm::ivec2 m_size{1};
     float m_aspect = 1.0f;
     glm::mat4 m_viewProjection{1.0f};
-    const Program* m_litProgram = nullptr;
     const Program* m_flatProgram = nullptr;
     const Program* m_imageProgram = nullptr;
     const Program* m_lineProgram = nullptr;
-    std::unique_ptr<ObjectUniforms> m_litUniforms;
+    std::map<const Program*, std::pair<GLuint, std::unique_ptr<ObjectUniforms>>> m_objectUniforms;
+    std::unique_ptr<EditorAssets> m_assets;
+    std::filesystem::path m_sceneFile;   // empty: the lab's scene
+    std::vector<std::string> m_log;      // the latest lines, for the log panel
+    std::vector<std::string> m_modelNames;   // the asset panel's list
+    std::string m_shaderName;                // the shader panel's program and text
+    std::string m_shaderText;
+    std::optional<std::chrono::steady_clock::time_point> m_shaderEdited;   // last keystroke not compiled yet
+    std::chrono::steady_clock::time_point m_started = std::chrono::steady_clock::now();
     std::unique_ptr<FrameUniforms> m_frame;
     std::unique_ptr<DebugLineRenderer> m_lines;
-    std::map<std::string, std::shared_ptr<GpuMesh>> m_meshes;
     std::unique_ptr<Framebuffer> m_pickTarget;
     std::unique_ptr<TextureOverlay> m_overlay;
 };

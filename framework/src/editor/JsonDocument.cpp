@@ -275,8 +275,9 @@ private:
 
     /// nlohmann's message ("[json.exception.parse_error.101] parse error at
     /// line 3, column 5: syntax error while parsing object - unexpected string
-    /// literal; expected '}'") as a short plain one ("a missing ',' between two
-    /// members of the object"), from its parts and what is open here.
+    /// literal; expected '}'") as a short plain one ("a missing ',' before a
+    /// string (after the value that ends on line 2), or a missing '}'"), from
+    /// its parts and what is open here.
     std::string plainSyntaxError(const nlohmann::json::exception& error, const std::string& token) const {
         const std::string what = error.what();
         if (error.id == 406) return "the number '" + quoteInput(token, 24) + "' is too large";

@@ -52,6 +52,10 @@ public:
         } else {
             renderLive(size);
         }
+        if (!m_uiDecided) {
+            m_uiDecided = true;
+            m_showUi = m_screenshot.empty() && m_lab.uiPanelAtStart();
+        }
         if (m_showUi) drawUi(size);
         if (!m_screenshot.empty() && ++m_framesDrawn == 2) {
             saveScreenshot(size, m_screenshot);
@@ -354,6 +358,7 @@ private:
     std::unique_ptr<TextureOverlay> m_overlay;
     std::unique_ptr<ImGuiLayer> m_ui;   // made at the first F1
     bool m_showUi = false;
+    bool m_uiDecided = false;   // uiPanelAtStart() asked (at the first frame, after the first case loaded)
     bool m_uiTookEvent = false;         // the panel or the lab used the event being handled
     bool m_screenshotRequested = false;
 };

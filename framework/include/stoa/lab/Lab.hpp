@@ -69,6 +69,9 @@ public:
     /// Draws the lab's own controls into the window's UI panel (F1), between
     /// ImGui::Begin() and End(); nothing by default. Only in builds with Dear ImGui.
     virtual void drawUi() {}
+    /// True to open the window with the UI panel shown (an editor); F1 still
+    /// toggles it. Never for --screenshot, whose picture is the scene's.
+    virtual bool uiPanelAtStart() const { return false; }
     /// The lab's hooks into the framework (LabHooks.hpp: visibility, light
     /// culling, agent step), or nullptr for none (labs 01-05).
     virtual const LabHooks* hooks() const { return nullptr; }

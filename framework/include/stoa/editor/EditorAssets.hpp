@@ -1,0 +1,83 @@
+#pragma once
+// What an editor scene's names stand for, on the GPU: meshes ("shape:cube" or
+// an OBJ file), textures and programs, looked up in the scene file's folder
+// first and then in assets/ (programs: in shaders/), loaded once through
+// AssetCaches and reloaded when their files change on disk. A program whose
+// fragment stage was edited in the shader panel draws as its LiveShader
+// instead. A name that does not load is logged once and drawn without (a
+// texture), with the default program (a program) or not at all (a mesh).
+//
+//   EditorAssets assets;                               // a GL context is current
+//   assets.setReloadDispatch(assetsToReload);          // lab 11's
+//   assets.setSceneFolder(sceneFile.parent_path());
+//   each frame: assets.update(seconds); for (auto& line : assets.takeLog()) ...
+//   for (const GpuMesh* mesh : assets.meshes(object.mesh)) mesh->draw();
+
+#include <stoa/assets/AssetCache.hpp>
+#include <stoa/assets/GlAssets.hpp>
+#include <stoa/editor/LiveShader.hpp>
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace stoa {
+
+class EditorAssets {
+public:
+    /// The built-in shapes are uploaded here: needs a current context.
+    EditorAssets();
+    ~EditorAssets();
+
+    /// Names are looked up in `folder` (the scene file's) before assets/.
+    void setSceneFolder(const std::filesystem::path& folder);
+    /// Who decides which changed assets reload (AssetCache::setReloadDispatch).
+    void setReloadDispatch(ReloadDispatch dispatch);
+    /// Polls the files and reloads what the dispatch says is due.
+    void update(double now);
+    /// Log lines since the last call: reloads, failures, names that did not load.
+    std::vector<std::string> takeLog();
+
+    /// The shapes' names, in the order an asset browser lists them.
+    static const std::vector<std::string>& shapeNames();
+    /// The OBJ files under assets/ (names relative to it), for an asset browser.
+    std::vector<std::string> modelNames() const;
+
+    /// The meshes that draw `name`: one for a shape, one per material for an
+    /// OBJ model; none when it does not load (logged once).
+    std::vector<const GpuMesh*> meshes(const std::string& name);
+    /// The texture `name`; nullptr for "" or when it does not load (logged once).
+    const Texture2D* texture(const std::string& name);
+    /// The program `name` ("editor/lit": editor/lit.vert + editor/lit.frag in
+    /// shaders/); "" and names that do not load: editor/lit. Its uniform block
+    /// Frame is bound to FrameUniforms::kBinding.
+    const Program& program(const std::string& name);
+    /// The live shader of program `name` (made at the first call, from its files):
+    /// the shader panel edits it, and program(name) draws with it from then on.
+    LiveShader& liveShader(const std::string& name);
+    bool hasLiveShader(const std::string& name) const { return m_live.count(name) != 0; }
+
+    static constexpr const char* kDefaultProgram = "editor/lit";
+
+private:
+    AssetCache& cacheFor(const std::string& name);
+    void failedOnce(const std::string& name, const std::string& message);
+
+    std::map<std::string, std::shared_ptr<const GpuMesh>> m_shapes;
+    std::unique_ptr<AssetCache> m_assets;    // assets/
+    std::unique_ptr<AssetCache> m_scene;     // the scene file's folder (none until set)
+    std::unique_ptr<AssetCache> m_shaders;   // shaders/
+    std::map<std::string, AssetRef<GpuModel>> m_models;
+    std::map<std::string, AssetRef<Texture2D>> m_textures;
+    std::map<std::string, AssetRef<Program>> m_programs;
+    std::map<std::string, std::pair<GLuint, int>> m_boundBlocks;   // program name -> the id/generation bound
+    std::map<std::string, std::unique_ptr<LiveShader>> m_live;
+    std::set<std::string> m_failed;
+    std::vector<std::string> m_log;
+    ReloadDispatch m_dispatch;
+};
+
+} // namespace stoa

@@ -1,0 +1,100 @@
+// stoa-editor: a scene file in the scene editor's window, with lab 11's app
+// and the code of the track it was built from (yours, in your build): click to
+// select, drag the gizmo's arrows, undo and redo, edit in the panels (F1),
+// edit the material's shader live, save with Ctrl+S; textures, models and
+// shaders reload when another program saves them.
+//
+//   stoa-editor SCENE.json                    edit it in a window
+//   stoa-editor SCENE.json --screenshot FILE  the window's first frame saved as PNG, quit
+//   stoa-editor SCENE.json --render FILE [--backend osmesa|egl]
+//                                             the same picture headless
+// A scene named without a folder is looked up in assets/scenes/ too, so
+// `stoa-editor example.json` opens the example. docs/scene-files.md is the format.
+
+#include "editor_app.hpp"
+
+#include <stoa/editor/EditorSceneFile.hpp>
+#include <stoa/lab/LabApp.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+int usage(const std::string& problem) {
+    if (!problem.empty()) std::fprintf(stderr, "stoa-editor: %s\n", problem.c_str());
+    std::fprintf(stderr,
+                 "usage: stoa-editor SCENE.json [--screenshot FILE | --render FILE [--backend osmesa|egl]]\n"
+                 "Edits a scene file (docs/scene-files.md) in a window, or saves one picture of it.\n");
+    return 2;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty() || args[0].empty() || args[0][0] == '-')
+        return usage(args.empty() ? "" : (args[0] == "--help" ? "" : "the first argument is the scene file"));
+    std::filesystem::path scene = args[0];
+    std::error_code error;
+    if (!std::filesystem::exists(scene, error) && scene.parent_path().empty())
+        scene = stoa::paths::assetsDir() / "scenes" / scene;
+    if (!std::filesystem::is_regular_file(scene, error)) return usage("no scene file " + args[0]);
+    scene = std::filesystem::absolute(scene).lexically_normal();
+
+    std::vector<std::string> forwarded;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string& flag = args[i];
+        const bool hasValue = i + 1 < args.size();
+        if ((flag == "--screenshot" || flag == "--backend") && hasValue) {
+            forwarded.push_back(flag);
+            forwarded.push_back(args[++i]);
+        } else if (flag == "--render" && hasValue) {
+            forwarded.insert(forwarded.end(), {"--render", "scene", "--output", args[++i]});
+        } else {
+            return usage("unknown or incomplete flag " + flag);
+        }
+    }
+
+    // The scene's camera, read now so the case can start there (a broken file
+    // is reported here, with its line, before any window opens).
+    stoa::EditorScene loaded;
+    try {
+        loaded = stoa::loadEditorScene(scene);
+    } catch (const std::exception& problem) {
+        std::fprintf(stderr, "stoa-editor: %s\n", problem.what());
+        return 1;
+    }
+
+    // One case for the lab app, in a file of its own.
+    char cases[] = "/tmp/stoa-editor-XXXXXX";
+    const int fd = mkstemp(cases);
+    if (fd < 0) {
+        std::perror("stoa-editor: cannot write a temporary cases file");
+        return 1;
+    }
+    close(fd);
+    {
+        const stoa::EditorCamera& camera = loaded.camera;
+        std::ofstream out(cases);
+        out << "lab = 11_editor\ntitle = stoa-editor\n\n[case scene]\ndescription = " << scene.filename().string()
+            << "\nscene = " << scene.string() << "\ncamera = orbit\ntarget = " << camera.target.x << ' '
+            << camera.target.y << ' ' << camera.target.z << "\ndistance = " << camera.distance
+            << "\nyaw = " << camera.yawDegrees << "\npitch = " << camera.pitchDegrees << "\nfar = 400\n";
+    }
+    std::vector<std::string> labArgs{argv[0], "--cases", cases};
+    const bool render = !forwarded.empty() && forwarded[0] == "--render";
+    if (!render) labArgs.insert(labArgs.end(), {"--case", "scene"});
+    labArgs.insert(labArgs.end(), forwarded.begin(), forwarded.end());
+    std::vector<char*> labArgv;
+    for (std::string& arg : labArgs) labArgv.push_back(arg.data());
+    labArgv.push_back(nullptr);
+    stoa::EditorLabApp app;
+    const int status = stoa::runLab(app, STOA_LAB_BUILD_INFO, static_cast<int>(labArgs.size()), labArgv.data());
+    std::remove(cases);
+    return status;
+}
