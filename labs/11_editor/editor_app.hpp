@@ -26,6 +26,8 @@
 
 #include "editor.hpp"
 
+#include <stoa/audio/SoundClip.hpp>
+#include <stoa/audio/SoundDevice.hpp>
 #include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/InputError.hpp>
 #include <stoa/core/Paths.hpp>
@@ -169,6 +171,7 @@ public:
             runScript();
         }
         if (!m_sceneFile.empty()) reloadChangedAssets();
+        if (soundInWindow) updateSound(camera);
         if (m_view == View::Stencil) {
             drawStencilView();
             return;
@@ -195,6 +198,11 @@ public:
             return true;
         }
         case 'x': deleteSelection(); return true;
+        case 'k':
+            if (!m_sound || !m_sound->enabled()) return false;
+            m_sound->setMuted(!m_sound->muted());
+            log(m_sound->muted() ? "sound muted" : "sound on");
+            return true;
         case 19:   // Ctrl+S
             if (m_sceneFile.empty()) return false;
             save();
@@ -224,6 +232,11 @@ public:
             if (m_dragAxis >= 0) {
                 m_history.endMerge();
                 m_dragAxis = -1;
+                if (const EditorObject* object = m_scene.findObject(m_selected)) {
+                    std::printf("moved %s to (%.3f, %.3f, %.3f)\n", object->name.c_str(), object->position.x,
+                                object->position.y, object->position.z);
+                    std::fflush(stdout);
+                }
                 return true;
             }
             if (glm::length(event.position - m_pressPixel) < 3.0f) {   // a click, not a camera drag
@@ -236,6 +249,10 @@ public:
 
     bool uiPanelAtStart() const override { return !m_sceneFile.empty(); }
 
+    /// stoa-editor in a window: the wind loops, spawning and deleting make a
+    /// sound where it happens, and the listener follows the camera (k mutes).
+    bool soundInWindow = false;
+
     void drawUi() override {
 #ifdef STOA_EDITOR_APP_IMGUI
         ImGui::Text("%s", m_sceneFile.empty() ? "lab 11's scene" : m_sceneFile.filename().string().c_str());
@@ -247,6 +264,10 @@ public:
         if (!m_sceneFile.empty()) {
             ImGui::SameLine();
             if (ImGui::Button("Save (Ctrl+S)")) save();
+        }
+        if (m_sound && m_sound->enabled()) {
+            bool muted = m_sound->muted();
+            if (ImGui::Checkbox("mute (k)", &muted)) keyPressed('k');
         }
         bool stencil = m_view == View::Stencil;
         if (ImGui::Checkbox("show the stencil pick pass (v)", &stencil)) m_view = stencil ? View::Stencil : View::Shaded;
@@ -388,6 +409,7 @@ private:
             log("not spawned: the scene has no material to give it");
             return;
         }
+        playSound(m_sparkSound, object.position);
         m_history.perform(m_scene, {"spawn " + object.name, [object](EditorScene& s) { s.objects.push_back(object); },
                                     [id = object.id](EditorScene& s) { s.removeObject(id); }, ""});
         m_selected = object.id;
@@ -578,6 +600,7 @@ private:
                                      [&](const EditorObject& o) { return o.id == m_selected; });
         if (it == m_scene.objects.end()) return;
         const EditorObject copy = *it;
+        playSound(m_sparkSound, copy.position);
         const std::size_t index = static_cast<std::size_t>(it - m_scene.objects.begin());
         m_history.perform(m_scene, {"delete " + copy.name, [id = copy.id](EditorScene& s) { s.removeObject(id); },
                                     [copy, index](EditorScene& s) {
@@ -664,6 +687,26 @@ private:
         const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_started).count();
         m_assets->update(now);
         for (const std::string& line : m_assets->takeLog()) log(line);
+    }
+
+    void updateSound(const Camera& camera) {
+        if (!m_sound) {
+            m_sound = std::make_unique<SoundDevice>();   // sound off, with one line, where there is no device
+            if (!m_sound->enabled()) return;
+            try {
+                const auto clip = [](const char* name) { return SoundClip::fromFile(paths::assetsDir() / "sounds" / name).mono(); };
+                m_sparkSound = m_sound->upload(clip("spark.ogg"));
+                m_sound->playAmbient(m_sound->upload(clip("ambient_wind.ogg")), 0.25f);
+            } catch (const std::exception& error) {
+                log(std::string("sound: ") + error.what());
+            }
+        }
+        m_sound->setListener(camera.eyePosition(), camera.lookTarget() - camera.eyePosition(), camera.upVector());
+        m_sound->update();
+    }
+
+    void playSound(SoundBuffer buffer, const glm::vec3& where) {
+        if (m_sound && m_sound->enabled() && buffer.id != 0) m_sound->play(buffer, where, 0.8f);
     }
 
     void log(const std::string& line) {
@@ -922,6 +965,8 @@ private:
     std::filesystem::path m_sceneFile;   // empty: the lab's scene
     std::vector<std::string> m_log;      // the latest lines, for the log panel
     std::vector<std::string> m_modelNames;   // the asset panel's list
+    std::unique_ptr<SoundDevice> m_sound;    // made at the first frame of soundInWindow
+    SoundBuffer m_sparkSound;
     std::string m_shaderName;                // the shader panel's program and text
     std::string m_shaderText;
     std::optional<std::chrono::steady_clock::time_point> m_shaderEdited;   // last keystroke not compiled yet

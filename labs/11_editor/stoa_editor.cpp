@@ -16,6 +16,7 @@
 #include <stoa/editor/EditorSceneFile.hpp>
 #include <stoa/lab/LabApp.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <fstream>
@@ -94,6 +95,8 @@ int main(int argc, char** argv) {
     for (std::string& arg : labArgs) labArgv.push_back(arg.data());
     labArgv.push_back(nullptr);
     stoa::EditorLabApp app;
+    app.soundInWindow = std::find(forwarded.begin(), forwarded.end(), "--render") == forwarded.end() &&
+                        std::find(forwarded.begin(), forwarded.end(), "--screenshot") == forwarded.end();
     const int status = stoa::runLab(app, STOA_LAB_BUILD_INFO, static_cast<int>(labArgs.size()), labArgv.data());
     std::remove(cases);
     return status;
