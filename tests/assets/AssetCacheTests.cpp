@@ -3,6 +3,7 @@
 
 #include "catch.hpp"
 #include "TempFolder.hpp"
+#include "NoteAsset.hpp"
 
 #include <stoa/assets/AssetCache.hpp>
 #include <stoa/assets/DataAssets.hpp>
@@ -15,50 +16,12 @@
 #include <thread>
 
 using namespace stoa;
+using stoa::test::Note;
+using stoa::test::noteLoader;
+using stoa::test::updateUntil;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Note {
-    std::string text;
-};
-
-/// A note is its file's text; a first line "include NAME" adds the text of
-/// NAME (next to it). A line "broken" is bad input, reported at its line.
-AssetLoader<Note> noteLoader() {
-    return [](const fs::path& path) {
-        LoadedAsset<Note> loaded;
-        loaded.files = {path};
-        std::string text = readInputFile(path, 1 << 20, "a note");
-        if (text.rfind("include ", 0) == 0) {
-            const fs::path included = path.parent_path() / text.substr(8, text.find('\n') - 8);
-            loaded.files.push_back(included);
-            text = readInputFile(included, 1 << 20, "a note") + text.substr(text.find('\n') + 1);
-        }
-        const auto broken = text.find("broken");
-        if (broken != std::string::npos) {
-            const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + broken, '\n'));
-            throw InputError(path.string(), line, "a note cannot be broken");
-        }
-        loaded.asset = std::make_shared<const Note>(Note{text});
-        return loaded;
-    };
-}
-
-/// Calls update() with a time that goes up by `step` each call (and sleeps
-/// 20 ms between calls, to let the file system report) until `done()` or 2 s
-/// of wall time pass. Returns whether `done()`.
-template <typename Done>
-bool updateUntil(AssetCache& cache, double& now, double step, Done done) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
-    for (;;) {
-        now += step;
-        cache.update(now);
-        if (done()) return true;
-        if (std::chrono::steady_clock::now() > deadline) return false;
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-}
 
 bool contains(const std::vector<std::string>& lines, const std::string& part) {
     return std::any_of(lines.begin(), lines.end(),
@@ -98,75 +61,6 @@ TEST_CASE("AssetCache: an asset is loaded once by name and reloaded when its fil
     CHECK(cache.takeLog() == std::vector<std::string>{"reloaded notes/a.txt"});
     CHECK(cache.assets()[0].loadedAt == now);
     CHECK(cache.pendingChanges().empty());
-}
-
-TEST_CASE("AssetCache: a debounce dispatch reloads once the files have been quiet") {
-    const double debounce = 0.5;
-    // Lab 11's rule, written here: due when a file changed after the asset was
-    // loaded and no file of it changed in the last `debounceSeconds`.
-    const ReloadDispatch debounced = [](const std::vector<FileChange>& changes, const std::vector<AssetFiles>& assets,
-                                        double now, double debounceSeconds) {
-        std::vector<std::string> due;
-        for (const AssetFiles& asset : assets) {
-            bool changedSinceLoad = false;
-            double latest = -1e300;
-            for (const FileChange& change : changes) {
-                if (std::find(asset.files.begin(), asset.files.end(), change.file) == asset.files.end()) continue;
-                changedSinceLoad = changedSinceLoad || change.seconds > asset.loadedAt;
-                latest = std::max(latest, change.seconds);
-            }
-            if (changedSinceLoad && latest <= now - debounceSeconds) due.push_back(asset.name);
-        }
-        return due;
-    };
-
-    test::TempFolder folder("cache-debounce");
-    folder.write("a.txt", "include common.txt\nA");
-    folder.write("common.txt", "one ");
-    folder.write("b.txt", "B");
-    AssetCacheOptions options;
-    options.debounceSeconds = debounce;
-    AssetCache cache(folder.path(), options);
-    cache.setLoader<Note>(noteLoader());
-    int calls = 0;
-    cache.setReloadDispatch([&](const std::vector<FileChange>& changes, const std::vector<AssetFiles>& assets,
-                                double now, double debounceSeconds) {
-        ++calls;
-        CHECK(debounceSeconds == debounce);
-        return debounced(changes, assets, now, debounceSeconds);
-    });
-    AssetRef<Note> a = cache.get<Note>("a.txt");
-    AssetRef<Note> b = cache.get<Note>("b.txt");
-    CHECK(a->text == "one A");
-    REQUIRE(cache.assets().size() == 2);
-    CHECK(cache.assets()[0].files.size() == 2); // a.txt and the file it includes
-
-    double now = 1.0;
-    cache.update(now);
-    CHECK(calls == 0); // no change: nothing to ask
-
-    // A burst of saves of the included file: no reload while it goes on.
-    folder.write("common.txt", "two ");
-    REQUIRE(updateUntil(cache, now, 0.01, [&] { return !cache.pendingChanges().empty(); }));
-    const double firstSave = now;
-    CHECK(calls == 1);
-    cache.update(firstSave + 0.3);
-    now = firstSave + 0.3;
-    folder.write("common.txt", "three ");
-    REQUIRE(updateUntil(cache, now, 0.01, [&] { return cache.pendingChanges().back().seconds > firstSave; }));
-    const double lastSave = now;
-    CHECK(a.version() == 1);
-    cache.update(lastSave + debounce - 0.01);
-    CHECK(a.version() == 1); // still within the debounce of the last save
-
-    cache.update(lastSave + debounce + 0.001);
-    CHECK(a.version() == 2); // quiet long enough: one reload for the whole burst
-    CHECK(a->text == "three A");
-    CHECK(b.version() == 1); // another asset, untouched
-    CHECK(cache.takeLog() == std::vector<std::string>{"reloaded a.txt"});
-    CHECK(cache.pendingChanges().empty());
-    cache.update(lastSave + 2 * debounce);
-    CHECK(a.version() == 2);
 }
 
 TEST_CASE("AssetCache: a broken reload keeps the last good version and logs the file and line") {
