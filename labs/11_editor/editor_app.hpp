@@ -203,10 +203,6 @@ public:
             m_sound->setMuted(!m_sound->muted());
             log(m_sound->muted() ? "sound muted" : "sound on");
             return true;
-        case 19:   // Ctrl+S
-            if (m_sceneFile.empty()) return false;
-            save();
-            return true;
         case 'v':
             m_view = m_view == View::Shaded ? View::Stencil : View::Shaded;
             std::printf("view: %s\n", m_view == View::Shaded ? "shaded" : "stencil");
@@ -216,6 +212,12 @@ public:
     }
 
     bool handleEvent(const InputEvent& event) override {
+        // Ctrl+S: GLUT's control code 19 reaches keyPressed() as 's' (Window.cpp), so it is told here by Ctrl.
+        if (event.type == InputEvent::Type::KeyDown && event.key == keyOf('s') && event.modifiers.control) {
+            if (m_sceneFile.empty()) return false;
+            save();
+            return true;
+        }
         if (event.button != MouseButton::Left && event.type != InputEvent::Type::MouseMove) return false;
         if (event.type == InputEvent::Type::MouseDown) {
             m_pressPixel = event.position;
