@@ -90,14 +90,18 @@ public:
     /// below) and `command` has the same non-empty mergeKey as the latest
     /// edit, the two become ONE edit: undo takes both back at once (a drag
     /// sends a command at every mouse move; the whole drag is one undo step).
-    /// A command with a non-empty mergeKey opens a merge; endMerge() closes it.
+    /// A command with a non-empty mergeKey opens a merge (when it does not
+    /// merge into the latest edit); one with an empty mergeKey, endMerge(),
+    /// undo() and redo() close it.
     void perform(EditorScene& scene, EditCommand command);
     /// Closes the open merge (the mouse button went up): the next command is a
     /// new edit even with the same mergeKey.
     void endMerge();
-    /// Reverts the latest edit still done; false (and nothing changes) when none is.
+    /// Reverts the latest edit still done (and closes the merge); false (and
+    /// nothing changes) when none is.
     bool undo(EditorScene& scene);
-    /// Applies again the latest edit undone; false (and nothing changes) when none is.
+    /// Applies again the latest edit undone (and closes the merge); false (and
+    /// nothing changes) when none is.
     bool redo(EditorScene& scene);
 
     std::size_t undoCount() const { return m_done.size(); }
