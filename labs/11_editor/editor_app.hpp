@@ -419,38 +419,58 @@ private:
 
     /// The selection's material's fragment shader, recompiled as you type;
     /// an error shows at its line and the last good program keeps drawing.
+    /// Until the first edit the panel shows the file (reloaded with it); from
+    /// then on the editor draws with the panel's text until "Back to the file".
     void drawShaderPanel() {
         const ImVec2 display = ImGui::GetIO().DisplaySize;
         ImGui::SetNextWindowPos(ImVec2(display.x - 470.0f, 220.0f), ImGuiCond_FirstUseEver);
         ImGui::SetNextWindowSize(ImVec2(460.0f, std::max(200.0f, display.y - 350.0f)), ImGuiCond_FirstUseEver);
         ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);   // open it with its arrow
-        ImGui::Begin("Shader");
+        if (!ImGui::Begin("Shader")) {
+            ImGui::End();
+            return;
+        }
         const EditorObject* object = m_scene.findObject(m_selected);
         const EditorMaterial* material = object ? m_scene.findMaterial(object->material) : nullptr;
         const std::string name = material && !material->shader.empty() ? material->shader : EditorAssets::kDefaultProgram;
         ImGui::Text("%s.frag%s", name.c_str(), object ? "" : " (select an object for its material's)");
         try {
-            LiveShader& shader = m_assets->liveShader(name);
-            if (m_shaderName != name) {
+            const bool live = m_assets->hasLiveShader(name);
+            const int version = m_assets->programVersion(name);
+            if (m_shaderName != name || (!live && version != m_shaderFileVersion)) {
                 m_shaderName = name;
-                m_shaderText = shader.fragmentText();
+                m_shaderFileVersion = version;
+                m_shaderText = live ? m_assets->liveShader(name).fragmentText() : EditorAssets::fragmentFileText(name);
+                m_shaderEdited.reset();
             }
             if (ImGui::InputTextMultiline("##glsl", &m_shaderText, ImVec2(-1.0f, -60.0f), ImGuiInputTextFlags_AllowTabInput))
                 m_shaderEdited = std::chrono::steady_clock::now();
             if (m_shaderEdited && std::chrono::steady_clock::now() - *m_shaderEdited > std::chrono::milliseconds(300)) {
                 m_shaderEdited.reset();
+                LiveShader& shader = m_assets->liveShader(name);
                 if (shader.setFragmentText(m_shaderText)) log("shader " + name + ": compiled");
                 else log("shader " + name + ": " + shader.error());
             }
-            if (!shader.error().empty()) {
-                ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "line %d: %s", shader.errorLine(), shader.error().c_str());
-                ImGui::TextDisabled("drawing with the last program that compiled");
-            } else if (ImGui::Button("Save to file")) {
-                try {
-                    shader.saveToFile();
-                    log("saved " + shader.fragmentFile().string());
-                } catch (const std::exception& error) {
-                    log(std::string("not saved: ") + error.what());
+            if (!m_assets->hasLiveShader(name)) {
+                ImGui::TextDisabled("the file's text: type to edit it live");
+            } else {
+                LiveShader& shader = m_assets->liveShader(name);
+                if (!shader.error().empty()) {
+                    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "line %d: %s", shader.errorLine(), shader.error().c_str());
+                    ImGui::TextDisabled("drawing with the last program that compiled");
+                } else if (ImGui::Button("Save to file")) {
+                    try {
+                        shader.saveToFile();
+                        log("saved " + shader.fragmentFile().string());
+                    } catch (const std::exception& error) {
+                        log(std::string("not saved: ") + error.what());
+                    }
+                }
+                ImGui::SameLine();
+                if (ImGui::Button("Back to the file")) {
+                    m_assets->dropLiveShader(name);
+                    m_shaderName.clear();   // the file's text again at the next frame
+                    log("shader " + name + ": drawing with its file again");
                 }
             }
         } catch (const std::exception& error) {
@@ -971,6 +991,7 @@ private:
     SoundBuffer m_sparkSound;
     std::string m_shaderName;                // the shader panel's program and text
     std::string m_shaderText;
+    int m_shaderFileVersion = 0;             // the file's program version m_shaderText was read at
     std::optional<std::chrono::steady_clock::time_point> m_shaderEdited;   // last keystroke not compiled yet
     std::chrono::steady_clock::time_point m_started = std::chrono::steady_clock::now();
     std::unique_ptr<FrameUniforms> m_frame;

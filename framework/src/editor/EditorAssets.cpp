@@ -1,6 +1,7 @@
 #include <stoa/editor/EditorAssets.hpp>
 
 #include <stoa/core/InputError.hpp>
+#include <stoa/core/InputFile.hpp>
 #include <stoa/core/Paths.hpp>
 #include <stoa/geometry/Shapes.hpp>
 #include <stoa/render/FrameUniforms.hpp>
@@ -144,6 +145,15 @@ const Program& EditorAssets::program(const std::string& requested) {
         bound = {program->id(), generation};
     }
     return *program;
+}
+
+int EditorAssets::programVersion(const std::string& name) const {
+    const auto cached = m_programs.find(name);
+    return cached == m_programs.end() ? 0 : cached->second.version();
+}
+
+std::string EditorAssets::fragmentFileText(const std::string& name) {
+    return readInputFile(paths::shadersDir() / (name + ".frag"), 1 << 20, "a fragment shader");
 }
 
 LiveShader& EditorAssets::liveShader(const std::string& requested) {

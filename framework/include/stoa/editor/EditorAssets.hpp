@@ -59,6 +59,14 @@ public:
     /// the shader panel edits it, and program(name) draws with it from then on.
     LiveShader& liveShader(const std::string& name);
     bool hasLiveShader(const std::string& name) const { return m_live.count(name) != 0; }
+    /// Forgets the live shader of `name`: program(name) is its files' program
+    /// again (reloaded when they change).
+    void dropLiveShader(const std::string& name) { m_live.erase(name); }
+    /// How often the program `name` was loaded from its files (1 after the
+    /// first load, one more per reload; 0 before it was loaded).
+    int programVersion(const std::string& name) const;
+    /// The text of program `name`'s fragment file, as it is on disk now.
+    static std::string fragmentFileText(const std::string& name);
 
     static constexpr const char* kDefaultProgram = "editor/lit";
 
