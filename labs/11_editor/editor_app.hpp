@@ -251,6 +251,15 @@ public:
 
     bool uiPanelAtStart() const override { return !m_sceneFile.empty(); }
 
+    /// Escape with unsaved edits to a scene file: a warning first, a second
+    /// Escape quits without saving.
+    bool quitRequested() override {
+        if (m_sceneFile.empty() || m_quitWarned || !unsavedEdits()) return true;
+        m_quitWarned = true;
+        log("unsaved edits: Ctrl+S saves them; Escape again quits without saving");
+        return false;
+    }
+
     /// stoa-editor in a window: the wind loops, spawning and deleting make a
     /// sound where it happens, and the listener follows the camera (k mutes).
     bool soundInWindow = false;
@@ -306,11 +315,25 @@ private:
 
     // --- saving and the panels (stoa-editor) -----------------------------------------
 
+    /// Whether the scene differs from the file as last loaded or saved (the camera aside).
+    bool unsavedEdits() const {
+        EditorScene now = m_scene;
+        now.camera = m_savedCamera;
+        try {
+            return editorSceneToJson(now) != m_savedText;
+        } catch (const std::exception&) {   // a position that is not a number cannot be saved: it is unsaved
+            return true;
+        }
+    }
+
     void save() {
         const OrbitCamera& orbit = m_cameras.orbit;
         m_scene.camera = {orbit.lookTarget(), orbit.distance(), orbit.yawDegrees(), orbit.pitchDegrees()};
+        m_savedCamera = m_scene.camera;
         try {
             saveEditorScene(m_scene, m_sceneFile);
+            m_savedText = editorSceneToJson(m_scene);
+            m_quitWarned = false;
             log("saved " + m_sceneFile.string());
         } catch (const std::exception& error) {
             log(std::string("not saved: ") + error.what());
@@ -586,6 +609,9 @@ private:
 
     void reset() {
         m_scene = m_sceneFile.empty() ? editorLabScene() : loadEditorScene(m_sceneFile);
+        m_savedText = m_sceneFile.empty() ? std::string() : editorSceneToJson(m_scene);
+        m_savedCamera = m_scene.camera;
+        m_quitWarned = false;
         if (m_assets) m_assets->setSceneFolder(m_sceneFile.empty() ? paths::assetsDir() : m_sceneFile.parent_path());
         m_history = EditHistory();
         m_selected = 0;
@@ -986,6 +1012,9 @@ private:
     std::unique_ptr<EditorAssets> m_assets;
     std::filesystem::path m_sceneFile;   // empty: the lab's scene
     std::vector<std::string> m_log;      // the latest lines, for the log panel
+    std::string m_savedText;             // the scene as last loaded or saved, as JSON
+    EditorCamera m_savedCamera;          // its camera (moving the camera is no edit)
+    bool m_quitWarned = false;           // Escape said "unsaved edits" once
     std::vector<std::string> m_modelNames;   // the asset panel's list
     std::unique_ptr<SoundDevice> m_sound;    // made at the first frame of soundInWindow
     SoundBuffer m_sparkSound;

@@ -75,16 +75,22 @@ public:
     // window as labNN_name-screenshot.png in the current folder.
     void event(const InputEvent& event, const InputState&) override {
         m_uiTookEvent = false;
-        if (m_ui && m_showUi && m_ui->feed(event)) {
-            m_uiTookEvent = true;
-            return;
-        }
+        // F1 and F12 are the app's even while a panel's text field has the keyboard.
         if (event.type == InputEvent::Type::KeyDown && event.key == Key::F1) {
             m_showUi = !m_showUi;
             std::printf("ui panel %s\n", m_showUi ? "on" : "off");
             std::fflush(stdout);
-        } else if (event.type == InputEvent::Type::KeyDown && event.key == Key::F12) {
+            m_uiTookEvent = true;
+            return;
+        }
+        if (event.type == InputEvent::Type::KeyDown && event.key == Key::F12) {
             m_screenshotRequested = true;
+            m_uiTookEvent = true;
+            return;
+        }
+        if (m_ui && m_showUi && m_ui->feed(event)) {
+            m_uiTookEvent = true;
+            return;
         }
         runStudentCode([&] { m_uiTookEvent = m_lab.handleEvent(event); });
     }
@@ -140,7 +146,9 @@ public:
     void keyPressed(unsigned char key, const InputState&) override {
         if (m_uiTookEvent && key != 27) return;   // Escape always quits
         if (key == 27) {
-            m_window.requestClose();
+            bool quit = true;
+            runStudentCode([&] { quit = m_lab.quitRequested(); });
+            if (quit) m_window.requestClose();
         } else if (key >= '1' && key <= '9') {
             const std::size_t index = static_cast<std::size_t>(key - '1');
             if (index < m_pictures.size()) {

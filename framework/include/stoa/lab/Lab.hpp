@@ -72,6 +72,9 @@ public:
     /// True to open the window with the UI panel shown (an editor); F1 still
     /// toggles it. Never for --screenshot, whose picture is the scene's.
     virtual bool uiPanelAtStart() const { return false; }
+    /// Escape in the window: true to quit. An editor with unsaved edits says
+    /// so and returns false; a second Escape then quits (its choice).
+    virtual bool quitRequested() { return true; }
     /// The lab's hooks into the framework (LabHooks.hpp: visibility, light
     /// culling, agent step), or nullptr for none (labs 01-05).
     virtual const LabHooks* hooks() const { return nullptr; }

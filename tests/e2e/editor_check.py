@@ -1,0 +1,171 @@
+#!/usr/bin/env python3
+"""Helpers of the stoa-editor window tests (editor_*.sh), standard library only.
+
+  editor_check.py pixel SCENE.json WIDTH HEIGHT X Y Z
+      The window pixel "x y" (from the top-left) where the world point (X, Y, Z)
+      shows, seen by the scene file's orbit camera in a WIDTH x HEIGHT window.
+  editor_check.py colour IMAGE.png X Y
+      The mean colour "r g b" (0..255) of the 5 x 5 pixels around (X, Y).
+  editor_check.py write-png IMAGE.png R G B
+      A 64 x 64 RGB PNG of one colour (0..255 each).
+  editor_check.py moved ORIGINAL.json SAVED.json OBJECT
+      Passes (exit 0) when SAVED differs from ORIGINAL only in OBJECT's x
+      position, by more than 0.1, and says by how much; otherwise says what
+      differs (exit 1).
+
+The camera is the editor's (stoa-editor passes the scene's camera to its
+case): an orbit camera (OrbitCamera::eyePosition(), lab 01) looking at the
+target with +Y up, a vertical field of view of 50 degrees (CameraRig's default)
+and the window's aspect ratio. The PNG reader handles what Stoa writes:
+8-bit RGB or RGBA, not interlaced.
+"""
+
+import json
+import math
+import struct
+import sys
+import zlib
+
+
+def scene_pixel(scene_file, width, height, point):
+    with open(scene_file) as f:
+        camera = json.load(f).get("camera", {})
+    target = camera.get("target", [0.0, 0.0, 0.0])
+    distance = camera.get("distance", 12.0)
+    yaw = math.radians(camera.get("yaw", 30.0))
+    pitch = math.radians(camera.get("pitch", 25.0))
+    back = [math.cos(pitch) * math.sin(yaw), math.sin(pitch), math.cos(pitch) * math.cos(yaw)]
+    eye = [target[i] + distance * back[i] for i in range(3)]
+    # right = normalize(up x back), up = (0, 1, 0); the view's up = back x right.
+    n = math.hypot(back[0], back[2])
+    right = [back[2] / n, 0.0, -back[0] / n]
+    up = [back[1] * right[2] - back[2] * right[1],
+          back[2] * right[0] - back[0] * right[2],
+          back[0] * right[1] - back[1] * right[0]]
+    p = [point[i] - eye[i] for i in range(3)]
+    x = sum(right[i] * p[i] for i in range(3))
+    y = sum(up[i] * p[i] for i in range(3))
+    z = sum(back[i] * p[i] for i in range(3))   # negative in front of the eye
+    f = 1.0 / math.tan(math.radians(50.0) / 2.0)
+    aspect = width / height
+    ndc_x = f / aspect * x / -z
+    ndc_y = f * y / -z
+    return (ndc_x + 1.0) / 2.0 * width, (1.0 - ndc_y) / 2.0 * height
+
+
+def read_png(path):
+    """(width, height, channels, rows of bytes) of an 8-bit RGB/RGBA PNG."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        raise SystemExit(f"{path}: not a PNG file")
+    pos, idat, header = 8, b"", None
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        pos += 12 + length
+        if kind == b"IHDR":
+            header = struct.unpack(">IIBBBBB", body)
+        elif kind == b"IDAT":
+            idat += body
+        elif kind == b"IEND":
+            break
+    width, height, depth, colour_type, _, _, interlace = header
+    if depth != 8 or colour_type not in (2, 6) or interlace != 0:
+        raise SystemExit(f"{path}: expected 8-bit RGB or RGBA, not interlaced")
+    channels = 3 if colour_type == 2 else 4
+    raw = zlib.decompress(idat)
+    stride = width * channels
+    rows, previous = [], bytearray(stride)
+    for y in range(height):
+        start = y * (stride + 1)
+        kind, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
+        for i in range(stride):
+            a = line[i - channels] if i >= channels else 0
+            b = previous[i]
+            c = previous[i - channels] if i >= channels else 0
+            if kind == 1:
+                line[i] = (line[i] + a) & 255
+            elif kind == 2:
+                line[i] = (line[i] + b) & 255
+            elif kind == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line)
+        previous = line
+    return width, height, channels, rows
+
+
+def write_png(path, rgb):
+    size = 64
+    row = b"\x00" + bytes(rgb) * size
+    def chunk(kind, body):
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF)
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n")
+        f.write(chunk(b"IHDR", struct.pack(">IIBBBBB", size, size, 8, 2, 0, 0, 0)))
+        f.write(chunk(b"IDAT", zlib.compress(row * size)))
+        f.write(chunk(b"IEND", b""))
+
+
+def mean_colour(path, x, y):
+    width, height, channels, rows = read_png(path)
+    total, count = [0, 0, 0], 0
+    for yy in range(max(0, y - 2), min(height, y + 3)):
+        for xx in range(max(0, x - 2), min(width, x + 3)):
+            for c in range(3):
+                total[c] += rows[yy][xx * channels + c]
+            count += 1
+    return [round(t / count) for t in total]
+
+
+def check_moved(original_file, saved_file, name):
+    with open(original_file) as f:
+        original = json.load(f)
+    with open(saved_file) as f:
+        saved = json.load(f)
+    problems = []
+    before = [o for o in original["objects"] if o["name"] == name]
+    after = [o for o in saved["objects"] if o["name"] == name]
+    if len(before) != 1 or len(after) != 1:
+        return [f"expected one object named {name!r} in each file"]
+    moved_x = after[0]["position"][0] - before[0]["position"][0]
+    if not abs(moved_x) > 0.1:
+        problems.append(f"{name} moved along x by {moved_x:.4f}, expected more than 0.1")
+    else:
+        print(f"{name} moved along x by {moved_x:.3f}")
+    if after[0]["position"][1:] != before[0]["position"][1:]:
+        problems.append(f"{name}'s y and z changed: {before[0]['position']} -> {after[0]['position']}")
+    # Everything else is as it was: the object with its x put back, every other
+    # object, the materials, lights, camera and settings.
+    after[0]["position"][0] = before[0]["position"][0]
+    for key in sorted(set(original) | set(saved)):
+        if original.get(key) != saved.get(key):
+            problems.append(f"{key!r} changed: {original.get(key)!r} -> {saved.get(key)!r}")
+    return problems
+
+
+def main(argv):
+    command = argv[1] if len(argv) > 1 else ""
+    if command == "pixel" and len(argv) == 8:
+        x, y = scene_pixel(argv[2], int(argv[3]), int(argv[4]), [float(v) for v in argv[5:8]])
+        print(f"{round(x)} {round(y)}")
+    elif command == "colour" and len(argv) == 5:
+        print(*mean_colour(argv[2], int(argv[3]), int(argv[4])))
+    elif command == "write-png" and len(argv) == 6:
+        write_png(argv[2], [int(v) for v in argv[3:6]])
+    elif command == "moved" and len(argv) == 5:
+        problems = check_moved(argv[2], argv[3], argv[4])
+        for problem in problems:
+            print(problem)
+        return 1 if problems else 0
+    else:
+        print(__doc__, file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,31 @@
+# stoa-editor end to end (issue 16), included by tests/e2e/CMakeLists.txt where the
+# window tests are defined (Xvfb and xdotool found; `work` is the tests' work folder):
+#   editor_edit_save_reload           click, drag the gizmo, undo, redo, Ctrl+S; the saved
+#                                     file differs only there and reopens to the same picture
+#   editor_texture_reload             a texture renamed over reloads within a second and shows
+#   editor_shader_error_keeps_drawing a typo in the shader panel names its line, the last good
+#                                     program keeps drawing, the fix compiles
+#   editor_bad_scene_named            broken scene files and command lines (no window)
+# The window tests take the Xvfb lock as the e2e.window_* tests do.
+if(TARGET stoa-editor)
+  set(editor_window_tests "")
+  if(Python3_Interpreter_FOUND)
+    add_test(NAME e2e.editor_edit_save_reload
+             COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/editor_edit_save_reload.sh $<TARGET_FILE:stoa-editor>
+                     $<TARGET_FILE:compare_images> ${work}/editor-edit-save-reload)
+    add_test(NAME e2e.editor_texture_reload
+             COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/editor_texture_reload.sh $<TARGET_FILE:stoa-editor>
+                     ${work}/editor-texture-reload)
+    add_test(NAME e2e.editor_shader_error_keeps_drawing
+             COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/editor_shader_error_keeps_drawing.sh $<TARGET_FILE:stoa-editor>
+                     ${work}/editor-shader-error)
+    list(APPEND editor_window_tests e2e.editor_edit_save_reload e2e.editor_texture_reload
+                e2e.editor_shader_error_keeps_drawing)
+    set_tests_properties(${editor_window_tests} PROPERTIES RESOURCE_LOCK xvfb)
+  else()
+    message(WARNING "python3 not found: the stoa-editor window tests (e2e.editor_*) are skipped")
+  endif()
+  add_test(NAME e2e.editor_bad_scene_named
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/editor_bad_scene_named.sh $<TARGET_FILE:stoa-editor>
+                   ${work}/editor-bad-scene)
+endif()
