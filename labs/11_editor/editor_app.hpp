@@ -46,7 +46,10 @@
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/Lab.hpp>
 #include <stoa/math/Transforms.hpp>
+#include <stoa/render/AmbientOcclusion.hpp>
+#include <stoa/render/AmbientOcclusionPass.hpp>
 #include <stoa/render/DebugLineRenderer.hpp>
+#include <stoa/render/DeferredRenderer.hpp>
 #include <stoa/render/FrameUniforms.hpp>
 #include <stoa/render/ObjectUniforms.hpp>
 #include <stoa/render/TextureOverlay.hpp>
@@ -144,6 +147,7 @@ public:
         m_overlay = std::make_unique<TextureOverlay>();
         m_frame = std::make_unique<FrameUniforms>();
         m_lines = std::make_unique<DebugLineRenderer>(*m_lineProgram);
+        m_searchPath = resources.shaderSearchPath();   // for the deferred passes, loaded when first drawn
         m_assets = std::make_unique<EditorAssets>();
         m_assets->setReloadDispatch(assetsToReload);   // yours, for the files of a scene file's assets
     }
@@ -282,6 +286,7 @@ public:
         }
         bool stencil = m_view == View::Stencil;
         if (ImGui::Checkbox("show the stencil pick pass (v)", &stencil)) m_view = stencil ? View::Stencil : View::Shaded;
+        drawRendererControls();
         drawScenePanel();
         drawInspectorPanel();
         drawAssetPanel();
@@ -341,10 +346,35 @@ private:
     }
 
 #ifdef STOA_EDITOR_APP_IMGUI
+    /// The scene's renderer settings that this editor draws (an edit each):
+    /// deferred shading, ambient occlusion, the G-buffer's debug views.
+    void drawRendererControls() {
+        if (!ImGui::CollapsingHeader("Renderer")) return;
+        EditorRendererSettings settings = m_scene.renderer;
+        bool changed = ImGui::Checkbox("deferred shading (lab 08)", &settings.deferred);
+        if (settings.deferred) {
+            changed |= ImGui::Checkbox("ambient occlusion (lab 09)", &settings.ssao);
+            static const char* views[] = {"final", "albedo", "normals", "positions", "specular", "tiles"};
+            if (ImGui::BeginCombo("view", settings.debugView.c_str())) {
+                for (const char* view : views)
+                    if (ImGui::Selectable(view, settings.debugView == view)) {
+                        settings.debugView = view;
+                        changed = true;
+                    }
+                ImGui::EndCombo();
+            }
+        }
+        ImGui::TextDisabled("shadows, normal maps and crowds: not drawn yet");
+        if (!changed) return;
+        const EditorRendererSettings before = m_scene.renderer;
+        m_history.perform(m_scene, {"renderer settings", [settings](EditorScene& s) { s.renderer = settings; },
+                                    [before](EditorScene& s) { s.renderer = before; }, ""});
+    }
+
     /// Every object and light; a click selects.
     void drawScenePanel() {
-        ImGui::SetNextWindowPos(ImVec2(10.0f, 180.0f), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(ImVec2(200.0f, 200.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowPos(ImVec2(10.0f, 230.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(200.0f, 190.0f), ImGuiCond_FirstUseEver);
         ImGui::Begin("Scene");
         for (const EditorObject& object : m_scene.objects) {
             ImGui::PushID(static_cast<int>(object.id));
@@ -382,7 +412,7 @@ private:
     }
 
     void drawInspectorPanel() {
-        ImGui::SetNextWindowPos(ImVec2(10.0f, 390.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowPos(ImVec2(10.0f, 430.0f), ImGuiCond_FirstUseEver);
         ImGui::SetNextWindowSize(ImVec2(330.0f, 150.0f), ImGuiCond_FirstUseEver);
         ImGui::Begin("Inspector");
         EditorObject* object = m_scene.findObject(m_selected);
@@ -827,6 +857,10 @@ private:
             select(*m_pendingClick);
             m_pendingClick.reset();
         }
+        if (m_scene.renderer.deferred) {
+            drawDeferred();
+            return;
+        }
         PassDescription pass = passInto(m_size);
         pass.clear.color = pass.clear.depth = pass.clear.stencil = true;
         pass.clear.colorValue = glm::vec4(0.09f, 0.1f, 0.13f, 1.0f);
@@ -861,6 +895,90 @@ private:
                 mesh->draw();
             }
         }
+    }
+
+    /// Deferred shading (lab 08) with screen-space ambient occlusion (lab 09)
+    /// when the scene's renderer settings ask for them: the scene's objects
+    /// into the G-buffer, the occlusion from it, then the sun, the ambient
+    /// light and every point light (tiled). Their passes use labs 08 and 09's
+    /// code and GLSL, loaded at the first deferred frame.
+    void drawDeferred() {
+        if (!m_deferred) {
+            const auto load = [&](const std::string& vertex, const std::string& fragment) -> const Program& {
+                m_deferredPrograms.push_back(std::make_unique<Program>(Program::fromFiles(vertex, fragment, m_searchPath)));
+                return *m_deferredPrograms.back();
+            };
+            m_deferred = std::make_unique<DeferredRenderer>(DeferredPrograms::load(load), DeferredLabCode::fromLab08());
+            m_occlusion = std::make_unique<AmbientOcclusionPass>(load("basic/image.vert", "ssao/ssao.frag"),
+                                                                  load("basic/image.vert", "ssao/blur.frag"));
+            m_occlusion->setKernel(ssaoKernel(32, 1), ssaoNoise(2));
+        }
+        // The draw items, with materials that live as long as the list.
+        m_drawMaterials.assign(m_scene.objects.size(), Material());
+        DrawList items;
+        for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
+            const EditorObject& object = m_scene.objects[i];
+            const EditorMaterial* found = m_scene.findMaterial(object.material);
+            Material& material = m_drawMaterials[i];
+            DrawItem item;
+            if (found) {
+                material.ambient = material.diffuse = found->diffuse;
+                material.specular = found->specular;
+                material.shininess = found->shininess;
+                if (!found->diffuseMap.empty())
+                    item.diffuseMap = m_sceneFile.empty() && found->diffuseMap == "panel" ? &panelTexture() : m_assets->texture(found->diffuseMap);
+            }
+            item.model = modelOf(object);
+            item.normalMatrix = glm::inverseTranspose(glm::mat3(item.model));
+            item.material = &material;
+            for (const GpuMesh* mesh : m_assets->meshes(object.mesh)) {
+                item.mesh = mesh;
+                items.push_back(item);
+            }
+        }
+        std::vector<PointLight> lights;
+        for (const EditorLight& light : m_scene.lights) {
+            if (!light.on) continue;
+            PointLight point;
+            point.position = light.position;
+            point.color = light.color;
+            point.attenuation = glm::vec3(1.0f, 4.5f / light.radius, 75.0f / (light.radius * light.radius));
+            lights.push_back(point);
+        }
+        SceneLighting lighting;
+        lighting.ambient = m_scene.ambient;
+        lighting.moon = DirectionalLight{m_scene.sunDirection, m_scene.sunColor};
+        lighting.sky = glm::vec3(0.09f, 0.1f, 0.13f);
+
+        const GLuint output = StateCache::current().drawFramebuffer();
+        const Camera& camera = m_cameras.active();
+        DeferredSettings settings;
+        settings.mode = LightingMode::Tiled;
+        settings.view = deferredView(m_scene.renderer.debugView);
+        if (m_scene.renderer.ssao) {
+            m_deferred->renderGeometry(items, camera, m_size);
+            m_occlusion->render(*m_deferred, m_size, {});
+            StateCache::current().bindFramebuffer(output);
+            settings.reuseGBuffer = true;
+            settings.ambientOcclusion = &m_occlusion->blurred();
+        }
+        m_deferred->render(items, lights, lighting, camera, m_size, settings);
+        StateCache::current().bindFramebuffer(output);
+        m_frame->bind();   // the deferred passes bind their own frame block
+        PassDescription clearStencil = passInto(m_size);
+        clearStencil.clear.stencil = true;
+        beginPass(clearStencil);
+    }
+
+    /// "final", "albedo", "normals", "positions", "specular", "tiles" (the
+    /// lights per tile); anything else draws the final picture.
+    static DeferredView deferredView(const std::string& name) {
+        if (name == "albedo") return DeferredView::Albedo;
+        if (name == "normals") return DeferredView::Normals;
+        if (name == "positions") return DeferredView::Positions;
+        if (name == "specular") return DeferredView::Specular;
+        if (name == "tiles") return DeferredView::TileCounts;
+        return DeferredView::Final;
     }
 
     /// The selection: its outline (the object a little larger, drawn where the
@@ -1027,6 +1145,11 @@ private:
     std::unique_ptr<DebugLineRenderer> m_lines;
     std::unique_ptr<Framebuffer> m_pickTarget;
     std::unique_ptr<TextureOverlay> m_overlay;
+    std::vector<std::filesystem::path> m_searchPath;                 // the lab's GLSL search path
+    std::vector<std::unique_ptr<Program>> m_deferredPrograms;        // labs 08 and 09's passes
+    std::unique_ptr<DeferredRenderer> m_deferred;
+    std::unique_ptr<AmbientOcclusionPass> m_occlusion;
+    std::vector<Material> m_drawMaterials;                           // the deferred draw list's
 };
 
 } // namespace stoa
