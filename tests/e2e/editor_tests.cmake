@@ -5,6 +5,7 @@
 #   editor_texture_reload             a texture renamed over reloads within a second and shows
 #   editor_shader_error_keeps_drawing a typo in the shader panel names its line, the last good
 #                                     program keeps drawing, the fix compiles
+#   editor_renderer_settings          deferred shading, ambient occlusion, the normals view (no window)
 #   editor_bad_scene_named            broken scene files and command lines (no window)
 # The window tests take the Xvfb lock as the e2e.window_* tests do.
 if(TARGET stoa-editor)
@@ -22,6 +23,10 @@ if(TARGET stoa-editor)
     list(APPEND editor_window_tests e2e.editor_edit_save_reload e2e.editor_texture_reload
                 e2e.editor_shader_error_keeps_drawing)
     set_tests_properties(${editor_window_tests} PROPERTIES RESOURCE_LOCK xvfb)
+    # Headless: the scene file's renderer settings drawn (forward, deferred, occlusion, normals).
+    add_test(NAME e2e.editor_renderer_settings
+             COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/editor_renderer_settings.sh $<TARGET_FILE:stoa-editor>
+                     ${CMAKE_SOURCE_DIR} ${work}/editor-renderer-settings)
   else()
     message(WARNING "python3 not found: the stoa-editor window tests (e2e.editor_*) are skipped")
   endif()
