@@ -740,21 +740,10 @@ private:
             static const glm::vec3 colours[] = {{0.9f, 0.85f, 0.7f}, {0.3f, 0.55f, 0.9f}, {0.9f, 0.3f, 0.35f}, {0.35f, 0.8f, 0.4f}};
             const glm::vec3 paper = colours[m_panelFiles[0] % 4];
             const int stripes = 2 + 2 * (m_panelFiles[1] % 4);
-            Image image(64, 64, 4);
-            for (int y = 0; y < 64; ++y)
-                for (int x = 0; x < 64; ++x) {
-                    const bool ink = ((x * stripes) / 64) % 2 == 1;
-                    const glm::vec3 c = ink ? paper * 0.35f : paper;
-                    std::uint8_t* p = image.data() + (y * 64 + x) * 4;
-                    p[0] = static_cast<std::uint8_t>(c.r * 255.0f);
-                    p[1] = static_cast<std::uint8_t>(c.g * 255.0f);
-                    p[2] = static_cast<std::uint8_t>(c.b * 255.0f);
-                    p[3] = 255;
-                }
-            TextureOptions options;
-            options.mipmaps = false;
-            options.linear = false;
-            m_panelTexture = std::make_unique<Texture2D>(Texture2D::fromImage(image, options));
+            m_panelTexture = std::make_unique<Texture2D>(pictureTexture({64, 64}, [&](int x, int) {
+                const bool ink = ((x * stripes) / 64) % 2 == 1;
+                return ink ? paper * 0.35f : paper;
+            }));
         }
         return *m_panelTexture;
     }
@@ -800,14 +789,7 @@ private:
         Scene lights;
         lights.ambient = m_scene.ambient;
         lights.directionalLights = {DirectionalLight{m_scene.sunDirection, m_scene.sunColor}};
-        for (const EditorLight& light : m_scene.lights) {
-            if (!light.on) continue;
-            PointLight point;
-            point.position = light.position;
-            point.color = light.color;
-            point.attenuation = glm::vec3(1.0f, 4.5f / light.radius, 75.0f / (light.radius * light.radius));
-            lights.pointLights.push_back(point);
-        }
+        lights.pointLights = pointLights();
         m_aspect = static_cast<float>(m_size.x) / static_cast<float>(m_size.y);
         m_frame->update(camera, m_aspect, lights);
         m_frame->bind();
@@ -868,13 +850,7 @@ private:
         beginPass(pass);
         for (const EditorObject& object : m_scene.objects) {
             const EditorMaterial* found = m_scene.findMaterial(object.material);
-            Material material;
-            if (found) {
-                material.ambient = found->diffuse;
-                material.diffuse = found->diffuse;
-                material.specular = found->specular;
-                material.shininess = found->shininess;
-            }
+            const Material material = materialOf(found);
             const Program& program = m_assets->program(found ? found->shader : std::string());
             program.use();
             // Locations per program; a reloaded or re-edited program is a new GL program.
@@ -883,18 +859,50 @@ private:
                 uniforms = std::make_unique<ObjectUniforms>(program);
                 programId = program.id();
             }
-            DrawItem item;
-            item.model = modelOf(object);
-            item.normalMatrix = glm::inverseTranspose(glm::mat3(item.model));
-            item.material = &material;
-            if (found && !found->diffuseMap.empty())
-                item.diffuseMap = m_sceneFile.empty() && found->diffuseMap == "panel" ? &panelTexture() : m_assets->texture(found->diffuseMap);
+            DrawItem item = drawItemOf(object, found, material);
             for (const GpuMesh* mesh : m_assets->meshes(object.mesh)) {
                 item.mesh = mesh;
                 uniforms->apply(item);
                 mesh->draw();
             }
         }
+    }
+
+    /// The draw-time material of a scene material (the default one for none).
+    static Material materialOf(const EditorMaterial* found) {
+        Material material;
+        if (found) {
+            material.ambient = material.diffuse = found->diffuse;
+            material.specular = found->specular;
+            material.shininess = found->shininess;
+        }
+        return material;
+    }
+
+    /// An object's draw item without its mesh: matrices, `material`, diffuse map.
+    DrawItem drawItemOf(const EditorObject& object, const EditorMaterial* found, const Material& material) {
+        DrawItem item;
+        item.model = modelOf(object);
+        item.normalMatrix = glm::inverseTranspose(glm::mat3(item.model));
+        item.material = &material;
+        if (found && !found->diffuseMap.empty())
+            item.diffuseMap = m_sceneFile.empty() && found->diffuseMap == "panel" ? &panelTexture() : m_assets->texture(found->diffuseMap);
+        return item;
+    }
+
+    /// The scene's point lights that are on; the attenuation reaches about 1/76
+    /// of the light at its radius (constant 1, linear 4.5 / r, quadratic 75 / r^2).
+    std::vector<PointLight> pointLights() const {
+        std::vector<PointLight> lights;
+        for (const EditorLight& light : m_scene.lights) {
+            if (!light.on) continue;
+            PointLight point;
+            point.position = light.position;
+            point.color = light.color;
+            point.attenuation = glm::vec3(1.0f, 4.5f / light.radius, 75.0f / (light.radius * light.radius));
+            lights.push_back(point);
+        }
+        return lights;
     }
 
     /// Deferred shading (lab 08) with screen-space ambient occlusion (lab 09)
@@ -919,32 +927,14 @@ private:
         for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
             const EditorObject& object = m_scene.objects[i];
             const EditorMaterial* found = m_scene.findMaterial(object.material);
-            Material& material = m_drawMaterials[i];
-            DrawItem item;
-            if (found) {
-                material.ambient = material.diffuse = found->diffuse;
-                material.specular = found->specular;
-                material.shininess = found->shininess;
-                if (!found->diffuseMap.empty())
-                    item.diffuseMap = m_sceneFile.empty() && found->diffuseMap == "panel" ? &panelTexture() : m_assets->texture(found->diffuseMap);
-            }
-            item.model = modelOf(object);
-            item.normalMatrix = glm::inverseTranspose(glm::mat3(item.model));
-            item.material = &material;
+            m_drawMaterials[i] = materialOf(found);
+            DrawItem item = drawItemOf(object, found, m_drawMaterials[i]);
             for (const GpuMesh* mesh : m_assets->meshes(object.mesh)) {
                 item.mesh = mesh;
                 items.push_back(item);
             }
         }
-        std::vector<PointLight> lights;
-        for (const EditorLight& light : m_scene.lights) {
-            if (!light.on) continue;
-            PointLight point;
-            point.position = light.position;
-            point.color = light.color;
-            point.attenuation = glm::vec3(1.0f, 4.5f / light.radius, 75.0f / (light.radius * light.radius));
-            lights.push_back(point);
-        }
+        const std::vector<PointLight> lights = pointLights();
         SceneLighting lighting;
         lighting.ambient = m_scene.ambient;
         lighting.moon = DirectionalLight{m_scene.sunDirection, m_scene.sunColor};
@@ -1027,17 +1017,27 @@ private:
         int selectedValue = -1;   // drawn white
         for (std::size_t i = 0; i < m_scene.objects.size(); ++i)
             if (m_scene.objects[i].id == m_selected) selectedValue = static_cast<int>(i + 1);
-        Image image(m_size.x, m_size.y, 4);
-        for (int y = 0; y < m_size.y; ++y)
-            for (int x = 0; x < m_size.x; ++x) {
-                const std::uint8_t value = stencil.values[static_cast<std::size_t>(m_size.y - 1 - y) * m_size.x + x];
-                std::uint8_t* p = image.data() + (static_cast<std::size_t>(y) * m_size.x + x) * 4;
-                // Neighbouring values far apart in hue: value * golden angle.
-                const float hue = std::fmod(value * 0.618034f, 1.0f) * 6.0f;
-                const glm::vec3 c = value == selectedValue ? glm::vec3(1.0f)
-                                    : value == 0 ? glm::vec3(0.0f)
-                                               : glm::clamp(glm::abs(glm::mod(hue + glm::vec3(0.0f, 4.0f, 2.0f), 6.0f) - 3.0f) - 1.0f,
-                                                            0.0f, 1.0f);
+        const Texture2D picture = pictureTexture(m_size, [&](int x, int y) {
+            const std::uint8_t value = stencil.values[static_cast<std::size_t>(m_size.y - 1 - y) * m_size.x + x];
+            if (value == selectedValue) return glm::vec3(1.0f);
+            if (value == 0) return glm::vec3(0.0f);
+            // Neighbouring values far apart in hue: value * golden angle.
+            const float hue = std::fmod(value * 0.618034f, 1.0f) * 6.0f;
+            return glm::clamp(glm::abs(glm::mod(hue + glm::vec3(0.0f, 4.0f, 2.0f), 6.0f) - 3.0f) - 1.0f, 0.0f, 1.0f);
+        });
+        picture.bind(0);
+        m_imageProgram->set("uImage", 0);
+        m_overlay->draw(*m_imageProgram, {0, 0, m_size.x, m_size.y});
+    }
+
+    /// A texture of `size` texels, `colour(x, y)` from the top-left corner, sampled nearest.
+    template <typename Colour>
+    static Texture2D pictureTexture(glm::ivec2 size, Colour colour) {
+        Image image(size.x, size.y, 4);
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) {
+                const glm::vec3 c = glm::clamp(colour(x, y), 0.0f, 1.0f);
+                std::uint8_t* p = image.data() + (static_cast<std::size_t>(y) * size.x + x) * 4;
                 p[0] = static_cast<std::uint8_t>(c.r * 255.0f);
                 p[1] = static_cast<std::uint8_t>(c.g * 255.0f);
                 p[2] = static_cast<std::uint8_t>(c.b * 255.0f);
@@ -1046,10 +1046,7 @@ private:
         TextureOptions options;
         options.mipmaps = false;
         options.linear = false;
-        const Texture2D picture = Texture2D::fromImage(image, options);
-        picture.bind(0);
-        m_imageProgram->set("uImage", 0);
-        m_overlay->draw(*m_imageProgram, {0, 0, m_size.x, m_size.y});
+        return Texture2D::fromImage(image, options);
     }
 
     // --- the mouse -------------------------------------------------------------------
