@@ -13,7 +13,9 @@
 //   - a frame of the example scene with 250 more objects (255 in all, the
 //     stencil pick's limit): the shaded pass, the selection's outline and gizmo;
 //   - the same frame after a click: the stencil pick pass, its read-back and
-//     objectAtPixel() on top (the difference is the pick's cost).
+//     objectAtPixel() on top (the difference is the pick's cost);
+//   - the same scene drawn deferred (lab 08, tiled lights) and deferred with
+//     ambient occlusion (lab 09, 32 samples).
 
 #include "BenchmarkTiming.hpp"
 
@@ -133,16 +135,25 @@ void frameFigures(int runs) {
     char folder[] = "/tmp/stoa-editor-benchmark-XXXXXX";
     if (!mkdtemp(folder)) throw std::runtime_error("cannot make a temporary folder");
     const std::filesystem::path sceneFile = std::filesystem::path(folder) / "bench.json";
-    saveEditorScene(sceneWith(255), sceneFile);
+    const std::filesystem::path deferredFile = std::filesystem::path(folder) / "deferred.json";
+    const std::filesystem::path occlusionFile = std::filesystem::path(folder) / "occlusion.json";
+    EditorScene scene = sceneWith(255);
+    saveEditorScene(scene, sceneFile);
+    scene.renderer.deferred = true;
+    saveEditorScene(scene, deferredFile);
+    scene.renderer.ssao = true;
+    saveEditorScene(scene, occlusionFile);
     const std::string camera = "camera = orbit\ntarget = 0 0.5 0\ndistance = 18\nyaw = 30\npitch = 35\nresolution = 1280 720\n";
     const LabManifest manifest = parseManifest(
         "lab = 11_editor\n\n[case frame]\ndescription = d\nscene = " + sceneFile.string() + "\n" + camera +
-            "\n[case click]\ndescription = d\nscene = " + sceneFile.string() + "\n" + camera + "commands = select 640 360\n",
+            "\n[case click]\ndescription = d\nscene = " + sceneFile.string() + "\n" + camera + "commands = select 640 360\n" +
+            "\n[case deferred]\ndescription = d\nscene = " + deferredFile.string() + "\n" + camera +
+            "\n[case occlusion]\ndescription = d\nscene = " + occlusionFile.string() + "\n" + camera,
         "editor_benchmark");
 
     HeadlessContext context;
     std::printf("frames (headless, %s), 1280x720, the example scene with 250 more objects:\n", context.description().c_str());
-    LabResources resources({paths::sourceDir() / "labs" / "11_editor", paths::shadersDir()});
+    LabResources resources({STOA_SOLUTIONS_DIR, paths::shadersDir()});   // as a solutions build's lab 11 finds its GLSL
     const glm::ivec2 size(1280, 720);
     const Framebuffer target(size.x, size.y);
     target.bind();
@@ -153,20 +164,21 @@ void frameFigures(int runs) {
         app.render(size);
         glFinish();
     };
-    frame("frame");   // warm-up: shaders, textures
-    frame("click");
-    std::vector<double> plain, clicked;
-    for (int run = 0; run < runs; ++run) {   // interleaved
-        Clock::time_point start = Clock::now();
-        frame("frame");
-        plain.push_back(milliseconds(start, Clock::now()));
-        start = Clock::now();
-        frame("click");
-        clicked.push_back(milliseconds(start, Clock::now()));
-    }
-    std::printf("  a frame (scene file loaded, drawn): %.1f ms\n", median(plain));
-    std::printf("  a frame with a click (pick pass, read-back, objectAtPixel): %.1f ms, the pick %.1f ms of it\n",
-                median(clicked), median(clicked) - median(plain));
+    const char* names[] = {"frame", "click", "deferred", "occlusion"};
+    for (const char* name : names) frame(name);   // warm-up: shaders, textures
+    std::vector<double> times[4];
+    for (int run = 0; run < runs; ++run)   // interleaved
+        for (int i = 0; i < 4; ++i) {
+            const Clock::time_point start = Clock::now();
+            frame(names[i]);
+            times[i].push_back(milliseconds(start, Clock::now()));
+        }
+    const double plain = median(times[0]), clicked = median(times[1]);
+    std::printf("  a frame (scene file loaded, drawn forward): %.1f ms\n", plain);
+    std::printf("  a frame with a click (pick pass, read-back, objectAtPixel): %.1f ms, the pick %.1f ms of it\n", clicked,
+                clicked - plain);
+    std::printf("  deferred (lab 08, tiled lights): %.1f ms; with ambient occlusion (lab 09): %.1f ms\n", median(times[2]),
+                median(times[3]));
     std::filesystem::remove_all(folder);
 }
 
