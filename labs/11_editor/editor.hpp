@@ -41,7 +41,8 @@ struct StencilReadback {
 /// the pixel itself shows the background, the nearest pixel within
 /// `radiusPixels` (Euclidean distance between pixel positions) that shows an
 /// object decides, so that a click just beside a thin object still takes it;
-/// of equally near pixels, the one met first in the read-back's order wins.
+/// of equally near pixels, the one met first in the read-back's order wins
+/// (in the picture: the lowest row first, then the leftmost pixel).
 /// A mouse position outside the read-back picks nothing.
 int objectAtPixel(const StencilReadback& stencil, glm::ivec2 mouse, int radiusPixels);
 
@@ -56,7 +57,8 @@ struct Line {
 /// The parameter s of the point axis.point + s * normalize(axis.direction) of
 /// the axis that comes closest to the mouse ray (as infinite lines); nullopt
 /// when the ray and the axis are parallel or nearly so (the sine of the angle
-/// between them below 1e-3), where no point is closest.
+/// between them below 1e-3), where no point is closest. Neither direction is
+/// of length 0.
 std::optional<float> closestAxisParameter(const Line& mouseRay, const Line& axis);
 
 /// Where an object that was at `startPosition` when the mouse went down on its
@@ -90,6 +92,8 @@ public:
     /// below) and `command` has the same non-empty mergeKey as the latest
     /// edit, the two become ONE edit: undo takes both back at once (a drag
     /// sends a command at every mouse move; the whole drag is one undo step).
+    /// The merged edit keeps the first command's revert (back to before the
+    /// drag) and takes the new command's apply and label.
     /// A command with a non-empty mergeKey opens a merge (when it does not
     /// merge into the latest edit); one with an empty mergeKey, endMerge(),
     /// undo() and redo() close it.

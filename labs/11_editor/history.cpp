@@ -5,6 +5,8 @@
 
 #include <stoa/core/NotImplemented.hpp>
 
+#include <utility>
+
 namespace stoa {
 
 void EditHistory::perform(EditorScene& scene, EditCommand command) {

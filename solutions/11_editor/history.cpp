@@ -3,6 +3,8 @@
 
 #include "editor.hpp"
 
+#include <utility>
+
 namespace stoa {
 
 void EditHistory::perform(EditorScene& scene, EditCommand command) {

@@ -1,0 +1,139 @@
+// Lab 11's property checks; see checks.hpp. They call your objectAtPixel(),
+// EditHistory and assetsToReload() on data of their own and test a rule the
+// docs state.
+
+#include "checks.hpp"
+
+#include "editor.hpp"
+
+#include <string>
+#include <vector>
+
+namespace lab11 {
+
+namespace {
+
+using stoa::CheckResult;
+
+/// A read-back of `width` x `height` zeros, bottom row first.
+stoa::StencilReadback background(int width, int height) {
+    return {width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height, 0)};
+}
+
+/// Sets the value at window pixel (x, y) (from the top-left corner).
+void put(stoa::StencilReadback& stencil, int x, int y, std::uint8_t value) {
+    stencil.values[static_cast<std::size_t>(stencil.height - 1 - y) * stencil.width + x] = value;
+}
+
+std::string pixel(int x, int y) { return "(" + std::to_string(x) + ", " + std::to_string(y) + ")"; }
+
+} // namespace
+
+CheckResult checkPickWithinACircle() {
+    stoa::StencilReadback stencil = background(21, 15);
+    if (stoa::objectAtPixel(stencil, {10, 7}, 4) != -1)
+        return CheckResult::fail("a click on the background with nothing within the radius picked an object");
+    put(stencil, 14, 7, 3);   // exactly 4 pixels to the right of (10, 7)
+    if (int got = stoa::objectAtPixel(stencil, {10, 7}, 4); got != 2)
+        return CheckResult::fail("value 3 exactly 4 pixels away, radius 4: expected object 2, got " + std::to_string(got));
+    if (int got = stoa::objectAtPixel(stencil, {10, 7}, 3); got != -1)
+        return CheckResult::fail("value 3 4 pixels away, radius 3: expected nothing (-1), got " + std::to_string(got));
+    stencil = background(21, 15);
+    put(stencil, 13, 4, 5);   // 3 right, 3 up: 4.24 pixels away, inside the square of side 2 x 4, outside the circle
+    if (int got = stoa::objectAtPixel(stencil, {10, 7}, 4); got != -1)
+        return CheckResult::fail("value 5 at " + pixel(13, 4) + ", 4.24 pixels from the click at " + pixel(10, 7) +
+                                 ", radius 4: expected nothing (the radius is a circle, not a square), got " + std::to_string(got));
+    stencil = background(21, 15);
+    put(stencil, 10, 5, 7);   // 2 above the click
+    put(stencil, 10, 9, 8);   // 2 below: the same distance, and first in the read-back (bottom rows first)
+    if (int got = stoa::objectAtPixel(stencil, {10, 7}, 4); got != 7)
+        return CheckResult::fail("values 7 two pixels above and 8 two pixels below the click: of equally near pixels "
+                                 "the first in the read-back's order (the bottom rows first) wins, expected object 7, got " +
+                                 std::to_string(got));
+    put(stencil, 10, 7, 1);
+    if (int got = stoa::objectAtPixel(stencil, {10, 7}, 4); got != 0)
+        return CheckResult::fail("value 1 under the mouse: expected object 0, got " + std::to_string(got));
+    for (const glm::ivec2 outside : {glm::ivec2(-1, 7), glm::ivec2(21, 7), glm::ivec2(10, -1), glm::ivec2(10, 15)})
+        if (int got = stoa::objectAtPixel(stencil, outside, 4); got != -1)
+            return CheckResult::fail("a mouse outside the read-back at " + pixel(outside.x, outside.y) +
+                                     " picked object " + std::to_string(got));
+    return CheckResult::pass("the radius is a circle including its edge, ties go to the read-back's order, "
+                             "the background and outside pick nothing");
+}
+
+CheckResult checkMergeRules() {
+    stoa::EditorScene scene;
+    const std::uint32_t id = scene.addObject("box", "shape:cube", "").id;
+    const auto x = [&] { return scene.findObject(id)->position.x; };
+    // A command that moves the box from where it is to `to`.
+    const auto move = [&](float to, const std::string& key) {
+        const float from = x();
+        return stoa::EditCommand{"move to " + std::to_string(to),
+                                 [id, to](stoa::EditorScene& s) { s.findObject(id)->position.x = to; },
+                                 [id, from](stoa::EditorScene& s) { s.findObject(id)->position.x = from; }, key};
+    };
+    stoa::EditHistory history;
+    history.perform(scene, move(1.0f, "drag"));
+    history.perform(scene, move(2.0f, "drag"));
+    history.perform(scene, move(3.0f, "drag"));
+    if (history.undoCount() != 1)
+        return CheckResult::fail("three moves with the key 'drag' while the merge was open: expected 1 edit, got " +
+                                 std::to_string(history.undoCount()));
+    if (history.doneLabels().back() != "move to 3.000000")
+        return CheckResult::fail("a merged edit keeps the latest command's label: expected 'move to 3.000000', got '" +
+                                 history.doneLabels().back() + "'");
+    history.endMerge();
+    history.perform(scene, move(4.0f, "drag"));
+    if (history.undoCount() != 2) return CheckResult::fail("after endMerge(), a command with the same key must be a new edit");
+    history.perform(scene, move(5.0f, "other"));
+    if (history.undoCount() != 3) return CheckResult::fail("a command with another key must be a new edit");
+    history.perform(scene, move(6.0f, ""));
+    history.perform(scene, move(7.0f, "other"));
+    if (history.undoCount() != 5)
+        return CheckResult::fail("a command without a key closes the merge: the next 'other' must be a new edit "
+                                 "(expected 5 edits, got " + std::to_string(history.undoCount()) + ")");
+    history.undo(scene);
+    history.perform(scene, move(8.0f, "other"));
+    if (history.undoCount() != 5)
+        return CheckResult::fail("undo() closes the merge: the command after it must be a new edit (expected 5 edits, got " +
+                                 std::to_string(history.undoCount()) + ")");
+    while (history.undo(scene)) {}
+    if (x() != 0.0f)
+        return CheckResult::fail("undoing every edit must bring the box back to 0, it is at " + std::to_string(x()) +
+                                 " (a merged edit reverts to before its first command)");
+    history.redo(scene);
+    if (x() != 3.0f)
+        return CheckResult::fail("redo of the merged drag must move the box to where its last command put it (3), got " +
+                                 std::to_string(x()));
+    return CheckResult::pass("merges only while open with equal keys; endMerge, a keyless command and undo close it; "
+                             "a merged edit undoes to before its first command and redoes to after its last");
+}
+
+CheckResult checkReloadBoundaries() {
+    using stoa::AssetFiles;
+    using stoa::FileChange;
+    const std::vector<AssetFiles> assets = {{"b", {"/s/b.png"}, 1.0}, {"a", {"/s/a.frag", "/s/common.glsl"}, 1.0},
+                                            {"c", {"/s/c.png"}, 2.0}};
+    const auto due = [&](const std::vector<FileChange>& changes, double now) {
+        std::string names;
+        for (const std::string& name : stoa::assetsToReload(changes, assets, now, 0.25)) names += (names.empty() ? "" : " ") + name;
+        return names;
+    };
+    if (std::string got = due({{"/s/common.glsl", 1.5}}, 1.75); got != "a")
+        return CheckResult::fail("a change exactly debounceSeconds (0.25) before now is quiet: expected 'a', got '" + got + "'");
+    if (std::string got = due({{"/s/common.glsl", 1.5}}, 1.74); !got.empty())
+        return CheckResult::fail("a change 0.24 s before now is not quiet (debounce 0.25): expected nothing, got '" + got + "'");
+    if (std::string got = due({{"/s/c.png", 2.0}}, 5.0); !got.empty())
+        return CheckResult::fail("a change at the asset's loadedAt is loaded already: expected nothing, got '" + got + "'");
+    if (std::string got = due({{"/s/other.png", 1.5}}, 5.0); !got.empty())
+        return CheckResult::fail("a change to a file no asset uses: expected nothing, got '" + got + "'");
+    const std::vector<FileChange> many = {{"/s/a.frag", 1.1}, {"/s/b.png", 1.2}, {"/s/common.glsl", 1.3},
+                                          {"/s/a.frag", 1.4}, {"/s/b.png", 1.45}};
+    if (std::string got = due(many, 3.0); got != "b a")
+        return CheckResult::fail("changes to b and to both of a's files: expected 'b a' (each once, in the assets' order), got '" +
+                                 got + "'");
+    return CheckResult::pass("quiet at exactly debounceSeconds, changes at loadedAt and to unused files ignored, "
+                             "each due asset once in the assets' order");
+}
+
+} // namespace lab11
