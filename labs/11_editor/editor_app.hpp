@@ -558,6 +558,8 @@ private:
         std::stringstream all(spec.getString("commands"));
         std::string text;
         while (std::getline(all, text, ';')) {
+            text.erase(0, text.find_first_not_of(" \t"));
+            text.erase(text.find_last_not_of(" \t") + 1);
             std::istringstream words(text);
             std::string verb;
             if (!(words >> verb)) continue;
