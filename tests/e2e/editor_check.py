@@ -26,6 +26,8 @@ import struct
 import sys
 import zlib
 
+from check_ui_panel import read_png   # (width, height, channels, rows) of an 8-bit RGB/RGBA PNG
+
 
 def scene_pixel(scene_file, width, height, point):
     with open(scene_file) as f:
@@ -51,51 +53,6 @@ def scene_pixel(scene_file, width, height, point):
     ndc_x = f / aspect * x / -z
     ndc_y = f * y / -z
     return (ndc_x + 1.0) / 2.0 * width, (1.0 - ndc_y) / 2.0 * height
-
-
-def read_png(path):
-    """(width, height, channels, rows of bytes) of an 8-bit RGB/RGBA PNG."""
-    with open(path, "rb") as f:
-        data = f.read()
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
-        raise SystemExit(f"{path}: not a PNG file")
-    pos, idat, header = 8, b"", None
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + length]
-        pos += 12 + length
-        if kind == b"IHDR":
-            header = struct.unpack(">IIBBBBB", body)
-        elif kind == b"IDAT":
-            idat += body
-        elif kind == b"IEND":
-            break
-    width, height, depth, colour_type, _, _, interlace = header
-    if depth != 8 or colour_type not in (2, 6) or interlace != 0:
-        raise SystemExit(f"{path}: expected 8-bit RGB or RGBA, not interlaced")
-    channels = 3 if colour_type == 2 else 4
-    raw = zlib.decompress(idat)
-    stride = width * channels
-    rows, previous = [], bytearray(stride)
-    for y in range(height):
-        start = y * (stride + 1)
-        kind, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
-        for i in range(stride):
-            a = line[i - channels] if i >= channels else 0
-            b = previous[i]
-            c = previous[i - channels] if i >= channels else 0
-            if kind == 1:
-                line[i] = (line[i] + a) & 255
-            elif kind == 2:
-                line[i] = (line[i] + b) & 255
-            elif kind == 3:
-                line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(line)
-        previous = line
-    return width, height, channels, rows
 
 
 def write_png(path, rgb):
