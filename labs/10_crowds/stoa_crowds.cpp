@@ -19,9 +19,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <fstream>
+#include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -79,46 +78,20 @@ int main(int argc, char** argv) {
         } else if (flag == "--trails" && hasValue) {
             trails = args[++i];
             if (trails != "on" && trails != "off") return usage("--trails is on or off");
-        } else if ((flag == "--screenshot" || flag == "--backend") && hasValue) {
+        } else if ((flag == "--screenshot" || flag == "--backend" || flag == "--render") && hasValue) {
             forwarded.push_back(flag);
-            forwarded.push_back(args[++i]);
-        } else if (flag == "--render" && hasValue) {
-            forwarded.push_back("--render");
-            forwarded.push_back("world");
-            forwarded.push_back("--output");
             forwarded.push_back(args[++i]);
         } else {
             return usage(("unknown or incomplete flag " + flag).c_str());
         }
     }
 
-    // One case for the lab app, in a file of its own.
-    char cases[] = "/tmp/stoa-crowds-XXXXXX";
-    const int fd = mkstemp(cases);
-    if (fd < 0) {
-        std::perror("stoa-crowds: cannot write a temporary cases file");
-        return 1;
-    }
-    close(fd);
-    {
-        std::ofstream out(cases);
-        out << "lab = 10_crowds\ntitle = stoa-crowds\n\n[case world]\ndescription = " << world.filename().string()
-            << "\nworld = " << world.string() << "\nsteps = " << steps << "\nview = " << view
-            << "\ncamera = orbit\ntarget = 0 0 0\ndistance = 34\nyaw = 20\npitch = 40\nfar = 200\n";
-        if (!trails.empty()) out << "trails = " << trails << "\n";
-    }
-    std::vector<std::string> labArgs{argv[0], "--cases", cases};
-    const bool render = !forwarded.empty() && forwarded[0] == "--render";
-    if (!render) {
-        labArgs.push_back("--case");
-        labArgs.push_back("world");
-    }
-    labArgs.insert(labArgs.end(), forwarded.begin(), forwarded.end());
-    std::vector<char*> labArgv;
-    for (std::string& arg : labArgs) labArgv.push_back(arg.data());
-    labArgv.push_back(nullptr);
+    // One case for the lab app.
+    std::ostringstream cases;
+    cases << "lab = 10_crowds\ntitle = stoa-crowds\n\n[case world]\ndescription = " << world.filename().string()
+          << "\nworld = " << world.string() << "\nsteps = " << steps << "\nview = " << view
+          << "\ncamera = orbit\ntarget = 0 0 0\ndistance = 34\nyaw = 20\npitch = 40\nfar = 200\n";
+    if (!trails.empty()) cases << "trails = " << trails << "\n";
     stoa::CrowdApp app;
-    const int status = stoa::runLab(app, STOA_LAB_BUILD_INFO, static_cast<int>(labArgs.size()), labArgv.data());
-    std::remove(cases);
-    return status;
+    return stoa::runLabOnCase(app, STOA_LAB_BUILD_INFO, argv[0], cases.str(), "world", forwarded);
 }

@@ -19,9 +19,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
-#include <fstream>
+#include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -51,11 +50,9 @@ int main(int argc, char** argv) {
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& flag = args[i];
         const bool hasValue = i + 1 < args.size();
-        if ((flag == "--screenshot" || flag == "--backend") && hasValue) {
+        if ((flag == "--screenshot" || flag == "--backend" || flag == "--render") && hasValue) {
             forwarded.push_back(flag);
             forwarded.push_back(args[++i]);
-        } else if (flag == "--render" && hasValue) {
-            forwarded.insert(forwarded.end(), {"--render", "scene", "--output", args[++i]});
         } else {
             return usage("unknown or incomplete flag " + flag);
         }
@@ -71,33 +68,15 @@ int main(int argc, char** argv) {
         return 1;
     }
 
-    // One case for the lab app, in a file of its own.
-    char cases[] = "/tmp/stoa-editor-XXXXXX";
-    const int fd = mkstemp(cases);
-    if (fd < 0) {
-        std::perror("stoa-editor: cannot write a temporary cases file");
-        return 1;
-    }
-    close(fd);
-    {
-        const stoa::EditorCamera& camera = loaded.camera;
-        std::ofstream out(cases);
-        out << "lab = 11_editor\ntitle = stoa-editor\n\n[case scene]\ndescription = " << scene.filename().string()
-            << "\nscene = " << scene.string() << "\ncamera = orbit\ntarget = " << camera.target.x << ' '
-            << camera.target.y << ' ' << camera.target.z << "\ndistance = " << camera.distance
-            << "\nyaw = " << camera.yawDegrees << "\npitch = " << camera.pitchDegrees << "\nfar = 400\n";
-    }
-    std::vector<std::string> labArgs{argv[0], "--cases", cases};
-    const bool render = !forwarded.empty() && forwarded[0] == "--render";
-    if (!render) labArgs.insert(labArgs.end(), {"--case", "scene"});
-    labArgs.insert(labArgs.end(), forwarded.begin(), forwarded.end());
-    std::vector<char*> labArgv;
-    for (std::string& arg : labArgs) labArgv.push_back(arg.data());
-    labArgv.push_back(nullptr);
+    // One case for the lab app, at the scene's camera.
+    const stoa::EditorCamera& camera = loaded.camera;
+    std::ostringstream cases;
+    cases << "lab = 11_editor\ntitle = stoa-editor\n\n[case scene]\ndescription = " << scene.filename().string()
+          << "\nscene = " << scene.string() << "\ncamera = orbit\ntarget = " << camera.target.x << ' '
+          << camera.target.y << ' ' << camera.target.z << "\ndistance = " << camera.distance
+          << "\nyaw = " << camera.yawDegrees << "\npitch = " << camera.pitchDegrees << "\nfar = 400\n";
     stoa::EditorLabApp app;
     app.soundInWindow = std::find(forwarded.begin(), forwarded.end(), "--render") == forwarded.end() &&
                         std::find(forwarded.begin(), forwarded.end(), "--screenshot") == forwarded.end();
-    const int status = stoa::runLab(app, STOA_LAB_BUILD_INFO, static_cast<int>(labArgs.size()), labArgv.data());
-    std::remove(cases);
-    return status;
+    return stoa::runLabOnCase(app, STOA_LAB_BUILD_INFO, argv[0], cases.str(), "scene", forwarded);
 }

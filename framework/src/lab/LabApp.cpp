@@ -11,7 +11,13 @@
 #include <stoa/gl/Program.hpp>
 #include <stoa/lab/LabApp.hpp>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include <unistd.h>
 
 namespace stoa {
 
@@ -82,6 +88,40 @@ int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv) {
         std::fprintf(stderr, "lab%s: %s\n", info.name, error.what());
         return kExitError;
     }
+}
+
+int runLabOnCase(Lab& lab, const LabBuildInfo& info, const std::string& program, const std::string& cases,
+                 const std::string& caseName, const std::vector<std::string>& options) {
+    std::string file = "/tmp/" + std::filesystem::path(program).filename().string() + "-XXXXXX";
+    const int fd = mkstemp(file.data());
+    if (fd < 0) {
+        std::fprintf(stderr, "%s: cannot write a temporary cases file in /tmp: %s\n", program.c_str(), std::strerror(errno));
+        return kExitError;
+    }
+    const bool written = write(fd, cases.data(), cases.size()) == static_cast<ssize_t>(cases.size());
+    close(fd);
+    if (!written) {
+        std::fprintf(stderr, "%s: cannot write the temporary cases file %s\n", program.c_str(), file.c_str());
+        std::remove(file.c_str());
+        return kExitError;
+    }
+    std::vector<std::string> args{program, "--cases", file};
+    bool render = false;
+    for (std::size_t i = 0; i < options.size(); ++i) {
+        if (options[i] == "--render" && i + 1 < options.size()) {
+            args.insert(args.end(), {"--render", caseName, "--output", options[++i]});
+            render = true;
+        } else {
+            args.push_back(options[i]);
+        }
+    }
+    if (!render) args.insert(args.end(), {"--case", caseName});
+    std::vector<char*> argv;
+    for (std::string& arg : args) argv.push_back(arg.data());
+    argv.push_back(nullptr);
+    const int status = runLab(lab, info, static_cast<int>(args.size()), argv.data());
+    std::remove(file.c_str());
+    return status;
 }
 
 } // namespace stoa

@@ -28,10 +28,20 @@
 #include <stoa/lab/LabProtocol.hpp>   // the exit codes
 
 #include <string>
+#include <vector>
 
 namespace stoa {
 
 int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv);
+
+/// For a tool built on a lab's app (stoa-crowds, stoa-editor): runs `lab` on
+/// the case `caseName` of the manifest text `cases`, written to a temporary
+/// file for the run. `options` are the tool's own flags for it: `--render
+/// FILE` (the case's picture, headless), `--screenshot FILE`, `--backend
+/// NAME`; without --render the case opens in a window. `program` names the
+/// tool in messages and as argv[0].
+int runLabOnCase(Lab& lab, const LabBuildInfo& info, const std::string& program, const std::string& cases,
+                 const std::string& caseName, const std::vector<std::string>& options);
 
 } // namespace stoa
 
