@@ -26,11 +26,13 @@
 
 #include "checks.hpp"
 #include "editor.hpp"
+#include "editor_pipeline.hpp"
 
 #include <stoa/audio/SoundClip.hpp>
 #include <stoa/audio/SoundDevice.hpp>
 #include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/InputError.hpp>
+#include <stoa/core/NotImplemented.hpp>
 #include <stoa/core/Paths.hpp>
 #include <stoa/editor/EditorAssets.hpp>
 #include <stoa/editor/EditorSceneFile.hpp>
@@ -43,6 +45,7 @@
 #include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/Texture2D.hpp>
+#include <stoa/image/HeightMap.hpp>
 #include <stoa/image/Image.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/Lab.hpp>
@@ -151,6 +154,16 @@ public:
         m_searchPath = resources.shaderSearchPath();   // for the deferred passes, loaded when first drawn
         m_assets = std::make_unique<EditorAssets>();
         m_assets->setReloadDispatch(assetsToReload);   // yours, for the files of a scene file's assets
+        // Lab 04's tangents on every mesh, for the deferred pipeline's normal maps.
+        m_assets->setMeshFilter([this](Mesh& mesh) {
+            if (m_tangentsMissing) return;
+            try {
+                computeTangents(mesh);
+            } catch (const NotImplemented& missing) {
+                m_tangentsMissing = true;
+                log(std::string("normal maps off: ") + missing.what());
+            }
+        });
     }
 
     void loadCase(const CaseSpec& spec) override {
@@ -183,6 +196,12 @@ public:
         }
         drawShaded();
         drawSelection();
+    }
+
+    /// The window's clock: the crowd walks and the wandering lights wander
+    /// (in the deferred pipeline); a headless picture stays at its start.
+    void update(float seconds) override {
+        if (m_pipeline && m_scene.renderer.deferred) m_pipeline->advance(seconds);
     }
 
     Camera& activeCamera() override { return m_cameras.active(); }
@@ -275,6 +294,11 @@ public:
     /// stoa-editor in a window: the wind loops, spawning and deleting make a
     /// sound where it happens, and the listener follows the camera (k mutes).
     bool soundInWindow = false;
+    /// The deferred pipeline waits for each pass to finish, so that its
+    /// statistics hold each pass's own time (the showcase benchmark).
+    bool timePasses = false;
+    /// The deferred pipeline; nullptr before its first frame.
+    const EditorPipeline* pipeline() const { return m_pipeline.get(); }
 
     void drawUi() override {
 #ifdef STOA_EDITOR_APP_IMGUI
@@ -354,25 +378,50 @@ private:
     }
 
 #ifdef STOA_EDITOR_APP_IMGUI
-    /// The scene's renderer settings that this editor draws (an edit each):
-    /// deferred shading, ambient occlusion, the G-buffer's debug views.
+    /// The scene's renderer settings (an edit each) and what the last frame drew.
     void drawRendererControls() {
         if (!ImGui::CollapsingHeader("Renderer")) return;
         EditorRendererSettings settings = m_scene.renderer;
-        bool changed = ImGui::Checkbox("deferred shading (lab 08)", &settings.deferred);
+        int pipeline = settings.deferred ? 1 : 0;
+        bool changed = ImGui::RadioButton("forward (lab 11)", &pipeline, 0);
+        ImGui::SameLine();
+        changed |= ImGui::RadioButton("deferred (labs 04-10)", &pipeline, 1);
+        settings.deferred = pipeline == 1;
         if (settings.deferred) {
+            changed |= ImGui::Checkbox("shadows (lab 05)", &settings.shadows);
+            ImGui::SameLine();
+            static const char* filters[] = {"one tap", "2x2", "3x3"};
+            ImGui::SetNextItemWidth(80.0f);
+            if (ImGui::BeginCombo("PCF", filters[std::min(std::max(settings.pcfSize, 1), 3) - 1])) {
+                for (int i = 0; i < 3; ++i)
+                    if (ImGui::Selectable(filters[i], settings.pcfSize == i + 1)) {
+                        settings.pcfSize = i + 1;
+                        changed = true;
+                    }
+                ImGui::EndCombo();
+            }
+            changed |= ImGui::Checkbox("normal maps (lab 04)", &settings.normalMaps);
+            ImGui::SameLine();
+            changed |= ImGui::Checkbox("culling and LOD (lab 06)", &settings.culling);
             changed |= ImGui::Checkbox("ambient occlusion (lab 09)", &settings.ssao);
-            static const char* views[] = {"final", "albedo", "normals", "positions", "specular", "tiles"};
+            ImGui::SameLine();
+            changed |= ImGui::Checkbox("sky (lab 06)", &settings.sky);
             if (ImGui::BeginCombo("view", settings.debugView.c_str())) {
-                for (const char* view : views)
-                    if (ImGui::Selectable(view, settings.debugView == view)) {
+                for (const std::string& view : courseViewNames())
+                    if (ImGui::Selectable(view.c_str(), settings.debugView == view)) {
                         settings.debugView = view;
                         changed = true;
                     }
                 ImGui::EndCombo();
             }
+            if (m_pipeline) {
+                const CourseStats& stats = m_pipeline->stats();
+                ImGui::Text("%d objects: %d culled, %d too small; by level %d / %d / %d / %d", stats.objects, stats.culled,
+                            stats.tooSmall, stats.perLevel[0], stats.perLevel[1], stats.perLevel[2], stats.perLevel[3]);
+                ImGui::Text("%d point lights (%ld in tile lists), %d agents; %.1f ms", stats.pointLights,
+                            stats.tileListEntries, stats.agents, 1e3 * stats.totalSeconds);
+            }
         }
-        ImGui::TextDisabled("shadows, normal maps and crowds: not drawn yet");
         if (!changed) return;
         const EditorRendererSettings before = m_scene.renderer;
         m_history.perform(m_scene, {"renderer settings", [settings](EditorScene& s) { s.renderer = settings; },
@@ -915,54 +964,59 @@ private:
         return lights;
     }
 
-    /// Deferred shading (lab 08) with screen-space ambient occlusion (lab 09)
-    /// when the scene's renderer settings ask for them: the scene's objects
-    /// into the G-buffer, the occlusion from it, then the sun, the ambient
-    /// light and every point light (tiled). Their passes use labs 08 and 09's
-    /// code and GLSL, loaded at the first deferred frame.
+    /// The deferred pipeline: every lab's pass in one frame (editor_pipeline.hpp,
+    /// stoa/render/CourseRenderer.hpp) with the students' code of labs 04-10,
+    /// loaded at the first deferred frame. A lab's function that is still a
+    /// stub switches the pipeline off with a line in the log.
     void drawDeferred() {
-        if (!m_deferred) {
-            const auto load = [&](const std::string& vertex, const std::string& fragment) -> const Program& {
-                m_deferredPrograms.push_back(std::make_unique<Program>(Program::fromFiles(vertex, fragment, m_searchPath)));
-                return *m_deferredPrograms.back();
-            };
-            m_deferred = std::make_unique<DeferredRenderer>(DeferredPrograms::load(load), DeferredLabCode::fromLab08());
-            m_occlusion = std::make_unique<AmbientOcclusionPass>(load("basic/image.vert", "ssao/ssao.frag"),
-                                                                  load("basic/image.vert", "ssao/blur.frag"));
-            m_occlusion->setKernel(ssaoKernel(32, 1), ssaoNoise(2));
-        }
-        // The draw items, with materials that live as long as the list.
-        m_drawMaterials.assign(m_scene.objects.size(), Material());
-        DrawList items;
-        for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
-            const EditorObject& object = m_scene.objects[i];
-            const EditorMaterial* found = m_scene.findMaterial(object.material);
-            m_drawMaterials[i] = materialOf(found);
-            DrawItem item = drawItemOf(object, found, m_drawMaterials[i]);
-            for (const GpuMesh* mesh : m_assets->meshes(object.mesh)) {
-                item.mesh = mesh;
-                items.push_back(item);
-            }
-        }
-        const std::vector<PointLight> lights = pointLights();
-        SceneLighting lighting;
-        lighting.ambient = m_scene.ambient;
-        lighting.moon = DirectionalLight{m_scene.sunDirection, m_scene.sunColor};
-        lighting.sky = glm::vec3(0.09f, 0.1f, 0.13f);
-
+        if (!m_pipeline)
+            m_pipeline = std::make_unique<EditorPipeline>(m_searchPath, [this](const std::string& line) { log(line); });
         const GLuint output = StateCache::current().drawFramebuffer();
-        const Camera& camera = m_cameras.active();
-        DeferredSettings settings;
-        settings.mode = LightingMode::Tiled;
-        settings.view = deferredView(m_scene.renderer.debugView);
-        if (m_scene.renderer.ssao) {
-            m_deferred->renderGeometry(items, camera, m_size);
-            m_occlusion->render(*m_deferred, m_size, {});
+        try {
+            m_pipeline->prepare(m_scene, m_sceneFile.empty() ? paths::assetsDir() : m_sceneFile.parent_path());
+            // The objects, with materials and maps that live as long as the frame.
+            m_drawMaterials.assign(m_scene.objects.size() + 1, Material());
+            std::vector<CourseItem> items;
+            for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
+                const EditorObject& object = m_scene.objects[i];
+                const EditorMaterial* found = m_scene.findMaterial(object.material);
+                m_drawMaterials[i] = materialOf(found);
+                const DrawItem drawn = drawItemOf(object, found, m_drawMaterials[i]);
+                CourseItem item;
+                item.model = drawn.model;
+                item.normalMatrix = drawn.normalMatrix;
+                item.material = &m_drawMaterials[i];
+                item.diffuseMap = drawn.diffuseMap;
+                item.normalMap = found && !m_tangentsMissing ? normalMap(found->normalMap) : nullptr;
+                for (const GpuMesh* mesh : m_assets->meshes(object.mesh)) {
+                    item.levels = {mesh};
+                    items.push_back(item);
+                }
+            }
+            const EditorMaterial* fieldFound = m_scene.findMaterial(m_scene.field.material);
+            m_drawMaterials.back() = materialOf(fieldFound);
+            const Texture2D* fieldDiffuse = fieldFound ? m_assets->texture(fieldFound->diffuseMap) : nullptr;
+
+            const EditorRendererSettings& renderer = m_scene.renderer;
+            CourseSettings settings;
+            settings.culling = renderer.culling;
+            settings.shadows = renderer.shadows;
+            settings.pcf = renderer.pcfSize == 1 ? PcfMode::Single : renderer.pcfSize == 2 ? PcfMode::TwoByTwo
+                                                                                             : PcfMode::ThreeByThree;
+            settings.normalMaps = renderer.normalMaps && !m_tangentsMissing;
+            settings.ambientOcclusion = renderer.ssao;
+            settings.sky = renderer.sky;
+            if (!courseViewFromName(renderer.debugView, settings.view)) settings.view = CourseView::Final;
+            settings.timePasses = timePasses;
+            m_pipeline->render(m_scene, std::move(items), pointLights(), &m_drawMaterials.back(), fieldDiffuse,
+                               m_cameras.active(), m_size, settings);
+        } catch (const NotImplemented& missing) {
+            log(std::string("the deferred pipeline needs ") + missing.what() + "; drawing forward");
+            m_scene.renderer.deferred = false;
             StateCache::current().bindFramebuffer(output);
-            settings.reuseGBuffer = true;
-            settings.ambientOcclusion = &m_occlusion->blurred();
+            drawShaded();
+            return;
         }
-        m_deferred->render(items, lights, lighting, camera, m_size, settings);
         StateCache::current().bindFramebuffer(output);
         m_frame->bind();   // the deferred passes bind their own frame block
         PassDescription clearStencil = passInto(m_size);
@@ -970,15 +1024,27 @@ private:
         beginPass(clearStencil);
     }
 
-    /// "final", "albedo", "normals", "positions", "specular", "tiles" (the
-    /// lights per tile); anything else draws the final picture.
-    static DeferredView deferredView(const std::string& name) {
-        if (name == "albedo") return DeferredView::Albedo;
-        if (name == "normals") return DeferredView::Normals;
-        if (name == "positions") return DeferredView::Positions;
-        if (name == "specular") return DeferredView::Specular;
-        if (name == "tiles") return DeferredView::TileCounts;
-        return DeferredView::Final;
+    /// A material's normal map: a tangent-space map as it is, or a height map
+    /// (.pgm) turned into one by lab 04's normalMapFromHeight(), once per name.
+    const Texture2D* normalMap(const std::string& name) {
+        if (name.empty()) return nullptr;
+        const auto extension = std::filesystem::path(name).extension();
+        if (extension != ".pgm") return m_assets->texture(name);
+        auto found = m_heightNormalMaps.find(name);
+        if (found != m_heightNormalMaps.end()) return found->second.get();
+        std::unique_ptr<Texture2D>& texture = m_heightNormalMaps[name];
+        std::error_code error;
+        std::filesystem::path path = (m_sceneFile.empty() ? paths::assetsDir() : m_sceneFile.parent_path()) / name;
+        if (!std::filesystem::is_regular_file(path, error)) path = paths::assetsDir() / name;
+        try {
+            texture = std::make_unique<Texture2D>(Texture2D::fromImage(normalMapFromHeight(loadHeightMap(path), 6.0f)));
+        } catch (const InputError& bad) {
+            log(std::string("cannot use the normal map ") + name + ": " + bad.what());
+        } catch (const NotImplemented& missing) {
+            m_tangentsMissing = true;
+            log(std::string("normal maps off: ") + missing.what());
+        }
+        return texture.get();
     }
 
     /// The selection: its outline (the object a little larger, drawn where the
@@ -1154,9 +1220,10 @@ private:
     std::unique_ptr<TextureOverlay> m_overlay;
     std::vector<std::filesystem::path> m_searchPath;                 // the lab's GLSL search path
     std::vector<std::unique_ptr<Program>> m_deferredPrograms;        // labs 08 and 09's passes
-    std::unique_ptr<DeferredRenderer> m_deferred;
-    std::unique_ptr<AmbientOcclusionPass> m_occlusion;
-    std::vector<Material> m_drawMaterials;                           // the deferred draw list's
+    std::unique_ptr<EditorPipeline> m_pipeline;                      // labs 04-10's passes, made when first drawn
+    std::vector<Material> m_drawMaterials;                           // the deferred items'
+    std::map<std::string, std::unique_ptr<Texture2D>> m_heightNormalMaps;   // normal maps made from height maps
+    bool m_tangentsMissing = false;                                  // lab 04's computeTangents() is a stub
 };
 
 } // namespace stoa

@@ -8,6 +8,9 @@
 //   stoa-editor SCENE.json --screenshot FILE  the window's first frame saved as PNG, quit
 //   stoa-editor SCENE.json --render FILE [--backend osmesa|egl]
 //                                             the same picture headless
+//   stoa-editor --scene showcase              a scene of assets/scenes/ by name: the
+//                                             showcase has every lab on (docs/showcase.md)
+//   ... --size 1280x720                       the window's (or picture's) size
 // A scene named without a folder is looked up in assets/scenes/ too, so
 // `stoa-editor example.json` opens the example. docs/scene-files.md is the format.
 
@@ -28,7 +31,8 @@ namespace {
 int usage(const std::string& problem) {
     if (!problem.empty()) std::fprintf(stderr, "stoa-editor: %s\n", problem.c_str());
     std::fprintf(stderr,
-                 "usage: stoa-editor SCENE.json [--screenshot FILE | --render FILE [--backend osmesa|egl]]\n"
+                 "usage: stoa-editor SCENE.json [--size WxH] [--screenshot FILE | --render FILE [--backend osmesa|egl]]\n"
+                 "       stoa-editor --scene NAME ...   (assets/scenes/NAME.json; --scene showcase: every lab at once)\n"
                  "Edits a scene file (docs/scene-files.md) in a window, or saves one picture of it.\n");
     return 2;
 }
@@ -36,21 +40,37 @@ int usage(const std::string& problem) {
 } // namespace
 
 int main(int argc, char** argv) {
-    const std::vector<std::string> args(argv + 1, argv + argc);
+    std::vector<std::string> args(argv + 1, argv + argc);
+    std::error_code error;
+    if (!args.empty() && args[0] == "--scene") {   // a scene of assets/scenes/ by its name
+        if (args.size() < 2 || args[1].empty() || args[1][0] == '-') return usage("--scene needs a name, e.g. --scene showcase");
+        std::filesystem::path named = stoa::paths::assetsDir() / "scenes" / args[1];
+        if (named.extension() != ".json") named += ".json";
+        if (!std::filesystem::is_regular_file(named, error))
+            return usage("no scene called " + args[1] + " in " + (stoa::paths::assetsDir() / "scenes").string());
+        args.erase(args.begin());
+        args[0] = named.string();
+    }
     if (args.empty() || args[0].empty() || args[0][0] == '-')
         return usage(args.empty() ? "" : (args[0] == "--help" ? "" : "the first argument is the scene file"));
     std::filesystem::path scene = args[0];
-    std::error_code error;
     if (!std::filesystem::exists(scene, error) && scene.parent_path().empty())
         scene = stoa::paths::assetsDir() / "scenes" / scene;
     if (!std::filesystem::is_regular_file(scene, error)) return usage("no scene file " + args[0]);
     scene = std::filesystem::absolute(scene).lexically_normal();
 
     std::vector<std::string> forwarded;
+    int width = 512, height = 512;   // a case's default
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& flag = args[i];
         const bool hasValue = i + 1 < args.size();
-        if ((flag == "--screenshot" || flag == "--backend" || flag == "--render") && hasValue) {
+        if (flag == "--size" && hasValue) {
+            char x = 0;
+            std::istringstream size(args[++i]);
+            if (!(size >> width >> x >> height) || x != 'x' || !size.eof() || width < 64 || height < 64 || width > 4096 ||
+                height > 4096)
+                return usage("--size expects WIDTHxHEIGHT from 64x64 to 4096x4096, e.g. 1280x720; got " + args[i]);
+        } else if ((flag == "--screenshot" || flag == "--backend" || flag == "--render") && hasValue) {
             forwarded.push_back(flag);
             forwarded.push_back(args[++i]);
         } else {
@@ -74,7 +94,8 @@ int main(int argc, char** argv) {
     cases << "lab = 11_editor\ntitle = stoa-editor\n\n[case scene]\ndescription = " << scene.filename().string()
           << "\nscene = " << scene.string() << "\ncamera = orbit\ntarget = " << camera.target.x << ' '
           << camera.target.y << ' ' << camera.target.z << "\ndistance = " << camera.distance
-          << "\nyaw = " << camera.yawDegrees << "\npitch = " << camera.pitchDegrees << "\nfar = 400\n";
+          << "\nyaw = " << camera.yawDegrees << "\npitch = " << camera.pitchDegrees << "\nfar = 400\nresolution = " << width << ' '
+          << height << "\n";
     stoa::EditorLabApp app;
     app.soundInWindow = std::find(forwarded.begin(), forwarded.end(), "--render") == forwarded.end() &&
                         std::find(forwarded.begin(), forwarded.end(), "--screenshot") == forwarded.end();

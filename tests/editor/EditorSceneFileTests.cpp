@@ -149,10 +149,22 @@ EditorScene fullScene() {
     scene.crowdWorld = "crowds/explorers.xml";
     scene.renderer.deferred = true;
     scene.renderer.shadows = false;
-    scene.renderer.pcfSize = 5;
+    scene.renderer.pcfSize = 2;
     scene.renderer.normalMaps = false;
     scene.renderer.ssao = true;
     scene.renderer.debugView = "albedo";
+    scene.renderer.sky = false;
+    scene.renderer.culling = false;
+    scene.field.meshes = {"acropolis/column.obj", "shape:cube"};
+    scene.field.rows = 7;
+    scene.field.spacing = 12.5f;
+    scene.field.clearRadius = 0.0f;
+    scene.field.seed = 42;
+    scene.lightSwarm.count = 128;
+    scene.lightSwarm.radius = 9.5f;
+    scene.lightSwarm.height = 1.25f;
+    scene.lightSwarm.brightness = 0.75f;
+    scene.lightSwarm.seed = 3;
     scene.camera.target = {1.0f, 2.0f, 3.0f};
     scene.camera.distance = 7.25f;
     scene.camera.yawDegrees = -135.0f;
@@ -202,6 +214,19 @@ void checkSameScene(const EditorScene& a, const EditorScene& b) {
     CHECK(a.renderer.normalMaps == b.renderer.normalMaps);
     CHECK(a.renderer.ssao == b.renderer.ssao);
     CHECK(a.renderer.debugView == b.renderer.debugView);
+    CHECK(a.renderer.sky == b.renderer.sky);
+    CHECK(a.renderer.culling == b.renderer.culling);
+    CHECK(a.field.meshes == b.field.meshes);
+    CHECK(a.field.material == b.field.material);
+    CHECK(a.field.rows == b.field.rows);
+    CHECK(a.field.spacing == b.field.spacing);
+    CHECK(a.field.clearRadius == b.field.clearRadius);
+    CHECK(a.field.seed == b.field.seed);
+    CHECK(a.lightSwarm.count == b.lightSwarm.count);
+    CHECK(a.lightSwarm.radius == b.lightSwarm.radius);
+    CHECK(a.lightSwarm.height == b.lightSwarm.height);
+    CHECK(a.lightSwarm.brightness == b.lightSwarm.brightness);
+    CHECK(a.lightSwarm.seed == b.lightSwarm.seed);
     checkSame(a.camera.target, b.camera.target);
     CHECK(a.camera.distance == b.camera.distance);
     CHECK(a.camera.yawDegrees == b.camera.yawDegrees);
@@ -278,7 +303,7 @@ TEST_CASE("A saved scene reads the way the format page shows it", "[editor][scen
     EditorObject& floor = scene.addObject("floor", "shape:plane", "stone");
     floor.scale = {20.0f, 1.0f, 20.0f};
     const std::string expected = R"({
-  "stoa_scene": 1,
+  "stoa_scene": 2,
   "ambient": [0.1, 0.1, 0.1],
   "sun": {
     "direction": [-0.4, -1, -0.3],
@@ -296,6 +321,8 @@ TEST_CASE("A saved scene reads the way the format page shows it", "[editor][scen
     "pcf": 3,
     "normal_maps": true,
     "ssao": false,
+    "sky": true,
+    "culling": true,
     "debug_view": "final"
   },
   "crowd_world": "",
@@ -354,7 +381,7 @@ TEST_CASE("A version-1 file as this build's first format wrote it still loads", 
     CHECK(scene.camera.yawDegrees == -40.0f);
     CHECK(scene.renderer.deferred);
     CHECK_FALSE(scene.renderer.shadows);
-    CHECK(scene.renderer.pcfSize == 5);
+    CHECK(scene.renderer.pcfSize == 3);   // version 1's 5 texels wide: lab 05's widest, 3 x 3
     CHECK(scene.renderer.ssao);
     CHECK(scene.renderer.debugView == "normals");
     CHECK(scene.crowdWorld == "crowds/explorers.xml");
@@ -380,14 +407,40 @@ TEST_CASE("The example scene loads, names existing assets and is saved byte for 
     bool hasFloor = false;
     for (const EditorObject& object : scene.objects) hasFloor = hasFloor || object.mesh == "shape:plane";
     CHECK(hasFloor);
-    for (const EditorMaterial& material : scene.materials) {
-        if (!material.diffuseMap.empty()) CHECK(fs::is_regular_file(paths::assetsDir() / material.diffuseMap));
-        if (!material.normalMap.empty()) CHECK(fs::is_regular_file(paths::assetsDir() / material.normalMap));
+}
+
+TEST_CASE("The scenes in assets/scenes name existing assets and are saved byte for byte", "[editor][scene-file]") {
+    for (const char* name : {"example.json", "showcase.json"}) {
+        INFO(name);
+        const fs::path path = paths::assetsDir() / "scenes" / name;
+        const EditorScene scene = loadEditorScene(path);
+        for (const EditorMaterial& material : scene.materials) {
+            if (!material.diffuseMap.empty()) CHECK(fs::is_regular_file(paths::assetsDir() / material.diffuseMap));
+            if (!material.normalMap.empty()) CHECK(fs::is_regular_file(paths::assetsDir() / material.normalMap));
+        }
+        for (const EditorObject& object : scene.objects)
+            if (object.mesh.rfind("shape:", 0) != 0) CHECK(fs::is_regular_file(paths::assetsDir() / object.mesh));
+        for (const std::string& mesh : scene.field.meshes)
+            if (mesh.rfind("shape:", 0) != 0) CHECK(fs::is_regular_file(paths::assetsDir() / mesh));
+        if (!scene.crowdWorld.empty()) CHECK(fs::is_regular_file(paths::assetsDir() / "crowds" / scene.crowdWorld));
+        // Written in the saver's own layout, so the editor's first save changes nothing.
+        CHECK(editorSceneToJson(scene) == readText(path));
     }
+}
+
+TEST_CASE("The showcase has every lab on", "[editor][scene-file]") {
+    const EditorScene scene = loadEditorScene(paths::assetsDir() / "scenes" / "showcase.json");
+    const EditorRendererSettings& renderer = scene.renderer;
+    CHECK((renderer.deferred && renderer.shadows && renderer.normalMaps && renderer.ssao && renderer.sky && renderer.culling));
+    CHECK(renderer.debugView == "final");
+    CHECK(scene.field.rows * scene.field.rows >= 300);   // a wide field for culling and LOD
+    CHECK(scene.lightSwarm.count >= 200);                // hundreds of point lights
+    CHECK_FALSE(scene.crowdWorld.empty());
+    int normalMapped = 0;
     for (const EditorObject& object : scene.objects)
-        if (object.mesh.rfind("shape:", 0) != 0) CHECK(fs::is_regular_file(paths::assetsDir() / object.mesh));
-    // Written in the saver's own layout, so the editor's first save changes nothing.
-    CHECK(editorSceneToJson(scene) == readText(path));
+        if (const EditorMaterial* material = scene.findMaterial(object.material); material && !material->normalMap.empty())
+            ++normalMapped;
+    CHECK(normalMapped >= 3);   // the floor, the wall, the statue
 }
 
 TEST_CASE("saveEditorScene replaces the file in one step and never leaves a half-written one", "[editor][scene-file]") {
@@ -458,9 +511,9 @@ TEST_CASE("loadEditorScene names the file it cannot read", "[editor][scene-file]
 
 TEST_CASE("Scene files that are not this build's are refused with their version", "[editor][scene-file]") {
     // The version is checked first: a newer file's new keys are not reported as unknown.
-    const std::string newer = replaced(replaced(kScene, "\"stoa_scene\": 1", "\"stoa_scene\": 2"), "\"crowd_world\": \"\"",
+    const std::string newer = replaced(replaced(kScene, "\"stoa_scene\": 1", "\"stoa_scene\": 3"), "\"crowd_world\": \"\"",
                                        "\"weather\": \"rain\"");
-    checkRefused(newer, 2, "written by a newer Stoa: version 2, this build reads 1");
+    checkRefused(newer, 2, "written by a newer Stoa: version 3, this build reads 2");
     checkRefused(replaced(kScene, "  \"stoa_scene\": 1,\n", ""), 1, "not a Stoa scene file: no \"stoa_scene\" version");
     checkRefused(replaced(kScene, "\"stoa_scene\": 1", "\"stoa_scene\": \"1\""), 2, "\"stoa_scene\" is the format's version");
     checkRefused(replaced(kScene, "\"stoa_scene\": 1", "\"stoa_scene\": 0"), 2, "a whole number from 1");
@@ -474,7 +527,7 @@ TEST_CASE("Unknown keys are refused with the keys allowed there", "[editor][scen
     const std::string top = replaced(kScene, "\"crowd_world\": \"\"", "\"crowds\": \"\"");
     checkRefused(top, lineOf(top, "\"crowds\""),
                  "unknown key \"crowds\" in the scene; the keys allowed there are: stoa_scene, ambient, sun, camera, "
-                 "renderer, crowd_world, materials, objects, lights");
+                 "renderer, crowd_world, field, light_swarm, materials, objects, lights");
     const std::string object = replaced(kScene, "\"scale\": [12, 1, 12]", "\"size\": [12, 1, 12]");
     checkRefused(object, lineOf(object, "\"size\""),
                  "unknown key \"size\" in objects[0]; the keys allowed there are: id, name, mesh, material, position, rotation, scale");
@@ -540,6 +593,32 @@ TEST_CASE("Ids, materials and ranges are checked", "[editor][scene-file]") {
     checkRefused(sun, lineOf(sun, "\"direction\""), "sun.direction: must not be [0, 0, 0]");
     const std::string control = replaced(kScene, "\"name\": \"lamp\"", "\"name\": \"la\\u0000mp\"");
     checkRefused(control, lineOf(control, "la\\u0000mp"), "lights[0].name: a control character");
+}
+
+TEST_CASE("The field and the light swarm of version 2 are checked", "[editor][scene-file]") {
+    const std::string v2 = replaced(replaced(kScene, "\"stoa_scene\": 1", "\"stoa_scene\": 2"), "\"crowd_world\": \"\"",
+                                    "\"crowd_world\": \"\",\n  \"field\": {\"meshes\": [\"shape:cube\"], \"material\": \"marble\", "
+                                    "\"rows\": 4, \"spacing\": 3, \"clear_radius\": 2, \"seed\": 1},\n  \"light_swarm\": "
+                                    "{\"count\": 10, \"radius\": 5, \"height\": 2, \"brightness\": 1.5, \"seed\": 2}");
+    const EditorScene scene = editorSceneFromJson(v2, "scene.json");
+    CHECK(scene.field.meshes == std::vector<std::string>{"shape:cube"});
+    CHECK(scene.field.rows == 4);
+    CHECK(scene.lightSwarm.count == 10);
+    CHECK(scene.lightSwarm.brightness == 1.5f);
+    const std::string rows = replaced(v2, "\"rows\": 4", "\"rows\": 0");
+    checkRefused(rows, lineOf(rows, "\"rows\": 0"), "field.rows: expected a whole number from 1 to 100 (copies per side), found the number 0");
+    const std::string material = replaced(v2, "\"material\": \"marble\", \"rows\"", "\"material\": \"gold\", \"rows\"");
+    checkRefused(material, lineOf(material, "gold"), "field.material: no material is called \"gold\"");
+    const std::string meshes = replaced(v2, "[\"shape:cube\"]", "\"shape:cube\"");
+    checkRefused(meshes, lineOf(meshes, "\"meshes\""), "field.meshes: expected an array of asset names");
+    const std::string count = replaced(v2, "\"count\": 10", "\"count\": 5000");
+    checkRefused(count, lineOf(count, "5000"), "light_swarm.count: expected a whole number from 0 to 4096");
+    const std::string height = replaced(v2, "\"height\": 2", "\"height\": 0.1");
+    checkRefused(height, lineOf(height, "0.1"), "light_swarm.height: must be 0.3 or more");
+    const std::string pcf = replaced(v2, "\"pcf\": 3", "\"pcf\": 5");
+    checkRefused(pcf, lineOf(pcf, "\"pcf\": 5"), "renderer.pcf: expected a whole number from 1 to 3 (lab 05's shadow filter");
+    const std::string key = replaced(v2, "\"seed\": 2", "\"speed\": 2");
+    checkRefused(key, lineOf(key, "\"speed\""), "unknown key \"speed\" in light_swarm; the keys allowed there are: count, radius, height, brightness, seed");
 }
 
 TEST_CASE("JSON syntax errors name the line and say plainly what is wrong", "[editor][scene-file]") {

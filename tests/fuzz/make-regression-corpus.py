@@ -516,7 +516,11 @@ def editor_scene_regression():
         "err-binary.json": bytes(range(256)),
         "err-not-an-object.json": "[1, 2, 3]",
         "err-no-version.json": '{"ambient": [0, 0, 0]}',
-        "err-newer-version.json": scene('"stoa_scene": 1', '"stoa_scene": 2'),
+        "ok-version-2-field-and-swarm.json": scene('"stoa_scene": 1', '"stoa_scene": 2').replace(
+            '"crowd_world"', '"field": {"meshes": ["shape:cube"], "rows": 3}, "light_swarm": {"count": 4}, "crowd_world"'),
+        "err-field-rows-0.json": scene('"stoa_scene": 1', '"stoa_scene": 2').replace(
+            '"crowd_world"', '"field": {"meshes": ["shape:cube"], "rows": 0}, "crowd_world"'),
+        "err-newer-version.json": scene('"stoa_scene": 1', '"stoa_scene": 3'),
         "err-version-past-int64.json": scene('"stoa_scene": 1', '"stoa_scene": 99999999999999999999'),
         "err-version-float.json": scene('"stoa_scene": 1', '"stoa_scene": 1.0'),
         "err-unknown-key.json": scene('"ambient"', '"ambiant"'),

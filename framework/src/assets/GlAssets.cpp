@@ -57,8 +57,8 @@ AssetLoader<Program> programLoader(std::vector<fs::path> searchPath) {
     };
 }
 
-AssetLoader<GpuModel> gpuModelLoader() {
-    return [](const fs::path& path) {
+AssetLoader<GpuModel> gpuModelLoader(std::function<void(Mesh&)> meshFilter) {
+    return [meshFilter](const fs::path& path) {
         LoadedAsset<GpuModel> loaded;
         loaded.files = {path};
         // Read as loadObj() does, noting each MTL file on the way.
@@ -85,7 +85,13 @@ AssetLoader<GpuModel> gpuModelLoader() {
         auto gpuModel = std::make_shared<GpuModel>();
         for (const ModelPart& part : model.parts) {
             GpuModelPart gpuPart;
-            gpuPart.mesh = std::make_shared<const GpuMesh>(part.mesh);
+            if (meshFilter) {
+                Mesh mesh = part.mesh;
+                meshFilter(mesh);
+                gpuPart.mesh = std::make_shared<const GpuMesh>(mesh);
+            } else {
+                gpuPart.mesh = std::make_shared<const GpuMesh>(part.mesh);
+            }
             gpuPart.material = part.material;
             gpuPart.diffuseMap = map(part.material.diffuseMap);
             gpuPart.specularMap = map(part.material.specularMap);
@@ -98,10 +104,10 @@ AssetLoader<GpuModel> gpuModelLoader() {
     };
 }
 
-void addGlAssetLoaders(AssetCache& cache, std::vector<fs::path> shaderSearchPath) {
+void addGlAssetLoaders(AssetCache& cache, std::vector<fs::path> shaderSearchPath, std::function<void(Mesh&)> meshFilter) {
     cache.setLoader<Texture2D>(textureLoader());
     cache.setLoader<Program>(programLoader(std::move(shaderSearchPath)));
-    cache.setLoader<GpuModel>(gpuModelLoader());
+    cache.setLoader<GpuModel>(gpuModelLoader(std::move(meshFilter)));
 }
 
 } // namespace stoa

@@ -15,12 +15,32 @@ namespace fs = std::filesystem;
 EditorAssets::EditorAssets()
     : m_assets(std::make_unique<AssetCache>(paths::assetsDir())),
       m_shaders(std::make_unique<AssetCache>(paths::shadersDir())) {
-    addGlAssetLoaders(*m_assets, {paths::shadersDir()});
-    addGlAssetLoaders(*m_shaders, {paths::shadersDir()});
-    m_shapes["shape:cube"] = std::make_shared<GpuMesh>(shapes::cube(1.0f));
-    m_shapes["shape:sphere"] = std::make_shared<GpuMesh>(shapes::sphere(0.5f, 32, 16));
-    m_shapes["shape:cylinder"] = std::make_shared<GpuMesh>(shapes::cylinder(0.5f, 1.0f, 32));
-    m_shapes["shape:plane"] = std::make_shared<GpuMesh>(shapes::plane(1.0f, 1));
+    addLoaders(*m_assets);
+    addLoaders(*m_shaders);
+    makeShapes();
+}
+
+void EditorAssets::addLoaders(AssetCache& cache) const {
+    addGlAssetLoaders(cache, {paths::shadersDir()}, m_meshFilter);
+}
+
+void EditorAssets::makeShapes() {
+    const auto upload = [&](Mesh mesh) {
+        if (m_meshFilter) m_meshFilter(mesh);
+        return std::make_shared<GpuMesh>(mesh);
+    };
+    m_shapes["shape:cube"] = upload(shapes::cube(1.0f));
+    m_shapes["shape:sphere"] = upload(shapes::sphere(0.5f, 32, 16));
+    m_shapes["shape:cylinder"] = upload(shapes::cylinder(0.5f, 1.0f, 32));
+    m_shapes["shape:plane"] = upload(shapes::plane(1.0f, 1));
+}
+
+void EditorAssets::setMeshFilter(std::function<void(Mesh&)> filter) {
+    m_meshFilter = std::move(filter);
+    for (AssetCache* cache : {m_assets.get(), m_scene.get(), m_shaders.get()})
+        if (cache) addLoaders(*cache);
+    m_models.clear();
+    makeShapes();
 }
 
 EditorAssets::~EditorAssets() = default;
@@ -33,7 +53,7 @@ void EditorAssets::setSceneFolder(const fs::path& folder) {
         return;
     }
     m_scene = std::make_unique<AssetCache>(absolute);
-    addGlAssetLoaders(*m_scene, {paths::shadersDir()});
+    addLoaders(*m_scene);
     if (m_dispatch) m_scene->setReloadDispatch(m_dispatch);
 }
 

@@ -60,7 +60,7 @@ public:
         readVersion(root);
         EditorScene scene;
         const std::initializer_list<const char*> keys = {"stoa_scene", "ambient", "sun", "camera", "renderer",
-                                                          "crowd_world", "materials", "objects", "lights"};
+                                                          "crowd_world", "field", "light_swarm", "materials", "objects", "lights"};
         checkKeys(root, "the scene", keys);
         // Materials before objects, whatever the order in the file: an object names one.
         if (const Value* value = find(root, "ambient")) scene.ambient = color(*value, "ambient");
@@ -73,6 +73,8 @@ public:
                 scene.materials.push_back(readMaterial(item, where, scene));
             });
         }
+        if (const Value* value = find(root, "field")) readField(*value, scene.field);
+        if (const Value* value = find(root, "light_swarm")) readLightSwarm(*value, scene.lightSwarm);
         if (const Value* value = find(root, "objects")) {
             forEachItem(*value, "objects", [&](const Value& item, const std::string& where) {
                 scene.objects.push_back(readObject(item, where, scene));
@@ -107,8 +109,9 @@ private:
                                     ", this build reads " + std::to_string(EditorScene::kFormatVersion) +
                                     " (open it with a newer Stoa)");
         }
-        // Version 1 is the only one so far; a later version reads the older
-        // ones here, filling what they lack with defaults.
+        // What a version lacks keeps its default; what changed meaning is
+        // carried over where it is read (renderer.pcf).
+        m_version = static_cast<int>(version->integer);
     }
 
     static const Value* find(const Value& object, const char* key) {
@@ -214,6 +217,56 @@ private:
         return id;
     }
 
+    int wholeInRange(const Value& value, const std::string& where, long long low, long long high, const char* meaning) const {
+        if (value.kind != Value::Kind::Number || !value.whole || !value.fitsInteger || value.integer < low ||
+            value.integer > high) {
+            fail(value.line, where + ": expected a whole number from " + std::to_string(low) + " to " +
+                                 std::to_string(high) + " (" + meaning + "), found " + json::describe(value));
+        }
+        return static_cast<int>(value.integer);
+    }
+
+    void readField(const Value& value, EditorField& field) const {
+        object(value, "field", {"meshes", "material", "rows", "spacing", "clear_radius", "seed"});
+        if (const Value* meshes = find(value, "meshes")) {
+            if (meshes->kind != Value::Kind::Array)
+                fail(meshes->line, "field.meshes: expected an array of asset names [\"...\", ...], found " + json::describe(*meshes));
+            for (std::size_t i = 0; i < meshes->items.size(); ++i) {
+                const std::string where = "field.meshes[" + std::to_string(i) + "]";
+                field.meshes.push_back(string(meshes->items[i], where));
+                if (field.meshes.back().empty()) fail(meshes->items[i].line, where + ": must not be empty");
+            }
+        }
+        if (const Value* material = find(value, "material")) {
+            field.material = string(*material, "field.material");
+            if (!field.material.empty() && m_materials.count(field.material) == 0)
+                fail(material->line, "field.material: no material is called \"" + quoteInput(field.material) + "\"");
+        }
+        if (const Value* rows = find(value, "rows")) field.rows = wholeInRange(*rows, "field.rows", 1, 100, "copies per side");
+        if (const Value* spacing = find(value, "spacing"))
+            field.spacing = positive(*spacing, "field.spacing", "metres between neighbouring places");
+        if (const Value* clear = find(value, "clear_radius")) {
+            field.clearRadius = number(*clear, "field.clear_radius");
+            if (field.clearRadius < 0.0f) fail(clear->line, "field.clear_radius: must be 0 or more, found " + clear->text);
+        }
+        if (const Value* seed = find(value, "seed")) field.seed = wholeInRange(*seed, "field.seed", 0, 2147483647, "any");
+    }
+
+    void readLightSwarm(const Value& value, EditorLightSwarm& swarm) const {
+        object(value, "light_swarm", {"count", "radius", "height", "brightness", "seed"});
+        if (const Value* count = find(value, "count"))
+            swarm.count = wholeInRange(*count, "light_swarm.count", 0, 4096, "how many lights");
+        if (const Value* radius = find(value, "radius"))
+            swarm.radius = positive(*radius, "light_swarm.radius", "how far from the origin they wander");
+        if (const Value* height = find(value, "height")) {
+            swarm.height = number(*height, "light_swarm.height");
+            if (!(swarm.height >= 0.3f)) fail(height->line, "light_swarm.height: must be 0.3 or more (metres; the paths start 0.3 m up), found " + height->text);
+        }
+        if (const Value* brightness = find(value, "brightness"))
+            swarm.brightness = positive(*brightness, "light_swarm.brightness", "scales every light's colour");
+        if (const Value* seed = find(value, "seed")) swarm.seed = wholeInRange(*seed, "light_swarm.seed", 0, 2147483647, "any");
+    }
+
     void readSun(const Value& value, EditorScene& scene) const {
         object(value, "sun", {"direction", "color"});
         if (const Value* direction = find(value, "direction")) {
@@ -233,19 +286,27 @@ private:
     }
 
     void readRenderer(const Value& value, EditorRendererSettings& renderer) const {
-        object(value, "renderer", {"deferred", "shadows", "pcf", "normal_maps", "ssao", "debug_view"});
+        object(value, "renderer", {"deferred", "shadows", "pcf", "normal_maps", "ssao", "sky", "culling", "debug_view"});
         if (const Value* on = find(value, "deferred")) renderer.deferred = boolean(*on, "renderer.deferred");
         if (const Value* on = find(value, "shadows")) renderer.shadows = boolean(*on, "renderer.shadows");
         if (const Value* pcf = find(value, "pcf")) {
-            if (pcf->kind != Value::Kind::Number || !pcf->whole || !pcf->fitsInteger ||
-                (pcf->integer != 1 && pcf->integer != 3 && pcf->integer != 5)) {
-                fail(pcf->line, "renderer.pcf: expected 1, 3 or 5 (the shadow filter's width in texels), found " +
-                                    json::describe(*pcf));
+            if (m_version == 1) {
+                // Version 1 gave the filter's width, 1, 3 or 5 texels; lab 05's widest is 3 x 3.
+                if (pcf->kind != Value::Kind::Number || !pcf->whole || !pcf->fitsInteger ||
+                    (pcf->integer != 1 && pcf->integer != 3 && pcf->integer != 5)) {
+                    fail(pcf->line, "renderer.pcf: expected 1, 3 or 5 (the shadow filter's width in texels), found " +
+                                        json::describe(*pcf));
+                }
+                renderer.pcfSize = pcf->integer == 1 ? 1 : 3;
+            } else {
+                renderer.pcfSize = wholeInRange(*pcf, "renderer.pcf", 1, 3,
+                                                "lab 05's shadow filter: 1 one tap, 2 the 2x2, 3 the 3x3 texels");
             }
-            renderer.pcfSize = static_cast<int>(pcf->integer);
         }
         if (const Value* on = find(value, "normal_maps")) renderer.normalMaps = boolean(*on, "renderer.normal_maps");
         if (const Value* on = find(value, "ssao")) renderer.ssao = boolean(*on, "renderer.ssao");
+        if (const Value* on = find(value, "sky")) renderer.sky = boolean(*on, "renderer.sky");
+        if (const Value* on = find(value, "culling")) renderer.culling = boolean(*on, "renderer.culling");
         if (const Value* view = find(value, "debug_view")) {
             renderer.debugView = string(*view, "renderer.debug_view");
             if (renderer.debugView.empty()) fail(view->line, "renderer.debug_view: must not be empty (\"final\" draws the finished picture)");
@@ -327,6 +388,7 @@ private:
     const std::string& m_file;
     std::map<std::uint32_t, IdUse> m_ids;               // each id read so far, and who has it
     std::map<std::string, std::size_t> m_materials;     // each material's name and index
+    int m_version = EditorScene::kFormatVersion;        // the file's
 };
 
 /// Writes the scene's text: each line by hand, so that the layout (one vec3
@@ -355,9 +417,34 @@ public:
         field(2, "pcf", std::to_string(renderer.pcfSize));
         field(2, "normal_maps", boolean(renderer.normalMaps));
         field(2, "ssao", boolean(renderer.ssao));
+        field(2, "sky", boolean(renderer.sky));
+        field(2, "culling", boolean(renderer.culling));
         field(2, "debug_view", string(renderer.debugView), true);
         close(1, '}');
         field(1, "crowd_world", string(scene.crowdWorld));
+        if (!scene.field.meshes.empty()) {
+            const EditorField& f = scene.field;
+            open(1, "field", '{');
+            std::string meshes = "[";
+            for (std::size_t i = 0; i < f.meshes.size(); ++i) meshes += (i ? ", " : "") + string(f.meshes[i]);
+            field(2, "meshes", meshes + "]");
+            field(2, "material", string(f.material));
+            field(2, "rows", std::to_string(f.rows));
+            field(2, "spacing", number(f.spacing, "field.spacing"));
+            field(2, "clear_radius", number(f.clearRadius, "field.clear_radius"));
+            field(2, "seed", std::to_string(f.seed), true);
+            close(1, '}');
+        }
+        if (scene.lightSwarm.count > 0) {
+            const EditorLightSwarm& swarm = scene.lightSwarm;
+            open(1, "light_swarm", '{');
+            field(2, "count", std::to_string(swarm.count));
+            field(2, "radius", number(swarm.radius, "light_swarm.radius"));
+            field(2, "height", number(swarm.height, "light_swarm.height"));
+            field(2, "brightness", number(swarm.brightness, "light_swarm.brightness"));
+            field(2, "seed", std::to_string(swarm.seed), true);
+            close(1, '}');
+        }
         list(scene.materials, "materials", [&](const EditorMaterial& material, const std::string& where) {
             field(3, "name", string(material.name));
             field(3, "diffuse", vec3(material.diffuse, where + ".diffuse"));

@@ -247,6 +247,12 @@ void CrowdRenderer::drawAgents(const Program& program) {
     }
 }
 
+void CrowdRenderer::drawAgentsWith(const CrowdSimulation& simulation, const Program& program,
+                                   const CrowdDrawOptions& options) {
+    uploadAgents(simulation, options);
+    drawAgents(program);
+}
+
 void CrowdRenderer::renderShadowMap(const CrowdDrawOptions& options) {
     // An orthographic box around the footprint, seen from the sun.
     const glm::vec3 centre = 0.5f * (m_sceneMin + m_sceneMax);

@@ -140,9 +140,19 @@ void DeferredRenderer::render(const DrawList& items, const std::vector<PointLigh
     updateFrame(camera, size, lighting);
 
     if (settings.view == DeferredView::Final && settings.mode == LightingMode::Tiled) {
-        // One pass, straight into the output: ambient light and every tile's lights.
-        StateCache::current().bindFramebuffer(output);
+        if (!settings.beforePresent) {
+            // One pass, straight into the output: ambient light and every tile's lights.
+            StateCache::current().bindFramebuffer(output);
+            drawTiled(lights, lighting, settings, false);
+            return;
+        }
+        // The same pass into the light buffer, for the caller's passes to add to.
+        copyDepthToLightBuffer();
+        StateCache::current().bindFramebuffer(m_lightBuffer.id());
         drawTiled(lights, lighting, settings, false);
+        StateCache::current().bindFramebuffer(m_lightBuffer.id());
+        settings.beforePresent(m_lightBuffer);
+        present(output, settings);
         return;
     }
     if (settings.view == DeferredView::Final && settings.mode == LightingMode::Forward) {
@@ -154,6 +164,10 @@ void DeferredRenderer::render(const DrawList& items, const std::vector<PointLigh
         copyDepthToLightBuffer();
         drawAmbient(lighting, settings);
         drawVolumes(lights, settings, false);
+        if (settings.beforePresent) {
+            StateCache::current().bindFramebuffer(m_lightBuffer.id());
+            settings.beforePresent(m_lightBuffer);
+        }
     } else if (settings.view == DeferredView::Overdraw) {
         // Counts, added up in the light buffer's red channel.
         copyDepthToLightBuffer();

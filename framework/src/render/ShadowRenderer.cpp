@@ -95,25 +95,20 @@ void ShadowRenderer::drawMapView(const Framebuffer& map, const ShadowLight& ligh
     m_overlay.draw(m_mapViewProgram, rectangle);
 }
 
-namespace {
-
 // The bias (slope factor, minimum, maximum) in shadow-map texels of world size:
 // the 1024^2 sun map of the single-map cases spends about 0.04 m per texel and
 // uses kSunBias = (0.004, 0.001, 0.015) of a 40 m depth range, i.e. these.
-constexpr glm::vec3 kCascadeBiasTexels{4.0f, 1.0f, 15.0f};
+static constexpr glm::vec3 kCascadeBiasTexels{4.0f, 1.0f, 15.0f};
 
-// A cascade's bias in its own window-depth units. Its matrix is an orthographic
-// projection times a rotation, so the length of row 0 is 2 / (box width) and
-// that of row 2 is 2 / (depth range).
-glm::vec3 cascadeBias(const glm::mat4& matrix, int mapSize) {
+// Its matrix is an orthographic projection times a rotation, so the length of
+// row 0 is 2 / (box width) and that of row 2 is 2 / (depth range).
+glm::vec3 cascadeDepthBias(const glm::mat4& matrix, int mapSize) {
     const float rowX = glm::length(glm::vec3(matrix[0][0], matrix[1][0], matrix[2][0]));
     const float rowZ = glm::length(glm::vec3(matrix[0][2], matrix[1][2], matrix[2][2]));
     const float texelWorld = 2.0f / (rowX * static_cast<float>(mapSize));
     const float depthRange = 2.0f / rowZ;
     return kCascadeBiasTexels * (texelWorld / depthRange);
 }
-
-} // namespace
 
 void ShadowRenderer::renderCascaded(const Scene& scene, const Camera& camera, glm::ivec2 size,
                                     const ShadowLight& light, const ShadowSettings& settings) {
@@ -160,7 +155,7 @@ void ShadowRenderer::renderCascaded(const Scene& scene, const Camera& camera, gl
         if (settings.enabled) m_cascadeMaps[cascade].bindDepthTexture(kFirstCascadeUnit + i);
         program.set("uCascadeMaps" + index, kFirstCascadeUnit + i);
         program.set("uCascadeMatrices" + index, m_cascadeMatrices[cascade]);
-        program.set("uCascadeBiases" + index, cascadeBias(m_cascadeMatrices[cascade], settings.mapSize));
+        program.set("uCascadeBiases" + index, cascadeDepthBias(m_cascadeMatrices[cascade], settings.mapSize));
     }
     // Units of the cascades a case does not use still need a sampler2D's unit.
     for (int i = count; i < kMaxCascades; ++i)

@@ -14,6 +14,7 @@
 #include <stoa/gl/Texture2D.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -47,10 +48,12 @@ AssetLoader<Program> programLoader(std::vector<std::filesystem::path> searchPath
 /// loadObj(path) with its parts uploaded and their maps loaded (as textureLoader()
 /// with default options; not shared with TextureCache, which would hand back the
 /// old texture of a changed file). Its files: the OBJ file, its MTL files and
-/// their maps. loadObj's warnings go to the cache's log.
-AssetLoader<GpuModel> gpuModelLoader();
+/// their maps. loadObj's warnings go to the cache's log. `meshFilter`, when
+/// set, changes each part's mesh before upload (the editor's lab-04 tangents).
+AssetLoader<GpuModel> gpuModelLoader(std::function<void(Mesh&)> meshFilter = {});
 
 /// Sets the three loaders on `cache`.
-void addGlAssetLoaders(AssetCache& cache, std::vector<std::filesystem::path> shaderSearchPath);
+void addGlAssetLoaders(AssetCache& cache, std::vector<std::filesystem::path> shaderSearchPath,
+                       std::function<void(Mesh&)> meshFilter = {});
 
 } // namespace stoa

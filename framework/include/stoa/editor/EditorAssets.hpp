@@ -18,6 +18,7 @@
 #include <stoa/editor/LiveShader.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -36,6 +37,9 @@ public:
     void setSceneFolder(const std::filesystem::path& folder);
     /// Who decides which changed assets reload (AssetCache::setReloadDispatch).
     void setReloadDispatch(ReloadDispatch dispatch);
+    /// Runs on every mesh (shapes and OBJ parts) before upload, from now on:
+    /// the editor's lab-04 tangents for normal maps. The shapes are made again.
+    void setMeshFilter(std::function<void(Mesh&)> filter);
     /// Polls the files and reloads what the dispatch says is due.
     void update(double now);
     /// Log lines since the last call: reloads, failures, names that did not load.
@@ -86,6 +90,9 @@ private:
     std::set<std::string> m_failed;
     std::vector<std::string> m_log;
     ReloadDispatch m_dispatch;
+    std::function<void(Mesh&)> m_meshFilter;
+    void makeShapes();
+    void addLoaders(AssetCache& cache) const;
 };
 
 } // namespace stoa

@@ -48,14 +48,39 @@ struct EditorLight {
     bool on = true;
 };
 
-/// How the editor draws: the course's passes, each on or off.
+/// How the editor draws: the course's passes, each on or off. Forward is lab
+/// 11's own pass; deferred is every lab's pass in one frame
+/// (stoa/render/CourseRenderer.hpp), and the settings below it apply there.
 struct EditorRendererSettings {
-    bool deferred = false;       // deferred shading (lab 08) instead of forward
-    bool shadows = true;         // the sun's shadow map (lab 05)
-    int pcfSize = 3;             // percentage-closer filter width in texels: 1, 3 or 5
+    bool deferred = false;       // the course pipeline (labs 04-10) instead of lab 11's forward pass
+    bool shadows = true;         // the sun's cascaded shadow maps (lab 05)
+    int pcfSize = 3;             // lab 05's percentage-closer filter: 1 one tap, 2 the 2x2, 3 the 3x3 texels
     bool normalMaps = true;      // lab 04
     bool ssao = false;           // lab 09
-    std::string debugView = "final";   // "final" or a pass's debug view (e.g. "albedo", "normals", "ambient")
+    bool sky = true;             // lab 06's skybox
+    bool culling = true;         // lab 06's frustum culling and levels of detail
+    std::string debugView = "final";   // "final" or a pass's debug view (CourseRenderer.hpp's courseViewNames())
+};
+
+/// A wide field of copies around the scene, jittered on a grid, for lab 06's
+/// culling and levels of detail. Not objects: no picking, no edits.
+struct EditorField {
+    std::vector<std::string> meshes;   // OBJ assets (or shapes), one picked per copy; empty: no field
+    std::string material;              // one of the scene's materials; empty: the default
+    int rows = 20;                     // rows x rows places
+    float spacing = 10.0f;             // metres between neighbouring places
+    float clearRadius = 16.0f;         // no copy within this many metres of the origin (x and z)
+    int seed = 6;
+};
+
+/// Point lights that wander over the ground in the deferred pipeline (lab 08's
+/// hundreds of lights). Not objects: no picking, no edits.
+struct EditorLightSwarm {
+    int count = 0;                     // 0: none
+    float radius = 14.0f;              // they stay within this many metres of the origin (x and z)
+    float height = 2.5f;               // their paths' centres lie from 0.3 m up to this many metres above y = 0
+    float brightness = 1.0f;           // scales every colour (each reaches about 3 to 4.5 m)
+    int seed = 1;
 };
 
 /// Where the editor's orbit camera looks from.
@@ -68,7 +93,7 @@ struct EditorCamera {
 
 struct EditorScene {
     /// The scene-file format this build writes; it reads versions 1 to this.
-    static constexpr int kFormatVersion = 1;
+    static constexpr int kFormatVersion = 2;   // 2: field, light_swarm, renderer.sky and .culling
 
     glm::vec3 ambient{0.1f};
     glm::vec3 sunDirection{-0.4f, -1.0f, -0.3f};   // the way the sunlight travels
@@ -76,7 +101,9 @@ struct EditorScene {
     std::vector<EditorMaterial> materials;
     std::vector<EditorObject> objects;
     std::vector<EditorLight> lights;
-    std::string crowdWorld;      // a crowd world (lab 10's XML) walking the scene; empty: none
+    std::string crowdWorld;      // a crowd world (lab 10's XML, assets/crowds/) walking the scene; empty: none
+    EditorField field;
+    EditorLightSwarm lightSwarm;
     EditorRendererSettings renderer;
     EditorCamera camera;
 

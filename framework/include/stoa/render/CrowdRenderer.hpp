@@ -105,6 +105,10 @@ public:
                 const CrowdDrawOptions& options);
 
     /// The model of agent type i.
+    /// The agents alone, drawn with `program` (crowd/md2.vert with a fragment
+    /// stage of the caller's: the course pipeline's G-buffer and shadow passes)
+    /// into the framebuffer bound now, under the frame block bound now.
+    void drawAgentsWith(const CrowdSimulation& simulation, const Program& program, const CrowdDrawOptions& options);
     const Md2GpuModel& model(std::size_t type) const { return *m_models[type]; }
 
     /// The frame block of `view`, lit by `options`' sun and ambient light (for callers that draw more).

@@ -38,6 +38,11 @@ enum class PcfMode { Single = 0, TwoByTwo = 1, ThreeByThree = 2 };
 /// "single", "2x2", "3x3".
 const char* toString(PcfMode mode);
 
+/// A cascade's depth bias (slope factor, minimum, maximum) in its own window-depth
+/// units, for shadows.glsl's slopeScaledBias(): a fixed number of its texels'
+/// world size, so that every cascade's bias covers the same share of a texel.
+glm::vec3 cascadeDepthBias(const glm::mat4& cascadeMatrix, int mapSize);
+
 /// The light that casts shadows: the scene's directional light 0 (orthographic
 /// map) or its point light 0 (perspective map).
 struct ShadowLight {

@@ -1,0 +1,201 @@
+#pragma once
+// Every pass of the course in one frame: stoa-editor's deferred pipeline and
+// its showcase (docs/showcase.md). In order:
+//
+//   culling    each object's bounding sphere against the camera's frustum and
+//              its level of detail from its size on screen (lab 06)
+//   shadows    the sun's cascaded shadow maps: splits, slices and light
+//              matrices from lab 05's code; the casters culled per cascade
+//   geometry   the G-buffer (lab 08's packing), surfaces bent by their normal
+//              maps (lab 04's tangent frame), a crowd's characters (lab 10)
+//   occlusion  screen-space ambient occlusion from the G-buffer (lab 09)
+//   lighting   ambient light and the point lights in tiles (lab 08), then the
+//              sun, tested against the cascades (lab 05's shadows.glsl)
+//   sky        the skybox where nothing was drawn (lab 06's skybox.glsl)
+//   present    the lit picture (or a debug view) into the bound framebuffer
+//
+// The students' functions come in through CourseLabCode, so the framework links
+// without them; their GLSL comes in through the programs' includes.
+//
+//   CourseRenderer renderer(CoursePrograms::load(loader), code);
+//   renderer.render(items, lighting, camera, size, settings, nullptr);
+//   std::printf("%.1f ms shadows\n", 1e3 * renderer.stats().seconds[int(CoursePass::Shadows)]);
+#include <stoa/geometry/Bounds.hpp>
+#include <stoa/gl/CubeMap.hpp>
+#include <stoa/gl/Framebuffer.hpp>
+#include <stoa/gl/GpuMesh.hpp>
+#include <stoa/render/AmbientOcclusionPass.hpp>
+#include <stoa/render/CrowdRenderer.hpp>
+#include <stoa/render/DeferredRenderer.hpp>
+#include <stoa/render/FrameUniforms.hpp>
+#include <stoa/render/ShadowRenderer.hpp>
+#include <stoa/render/TextureOverlay.hpp>
+#include <stoa/scene/Light.hpp>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace stoa {
+
+class Camera;
+class CrowdSimulation;
+class Program;
+class Texture2D;
+struct Material;
+
+/// One object to draw: its levels of detail, placement, material and maps.
+struct CourseItem {
+    std::vector<const GpuMesh*> levels;        // [0] the full mesh, then coarser ones; at least one
+    glm::mat4 model{1.0f};                     // object -> world
+    glm::mat3 normalMatrix{1.0f};              // the inverse transpose of model's 3x3
+    const Material* material = nullptr;        // nullptr: a grey default
+    const Texture2D* diffuseMap = nullptr;
+    const Texture2D* normalMap = nullptr;      // tangent-space; nullptr: the mesh's own normals
+    BoundingSphere sphere;                     // world space; radius 0: never culled, always full detail
+};
+
+enum class CoursePass { Culling = 0, Shadows, Geometry, Occlusion, Lighting, Sky, Present, Count };
+const char* toString(CoursePass pass);
+
+/// What render() puts on the screen: the picture or one pass's debug view.
+enum class CourseView {
+    Final,
+    Albedo, Normals, Positions, Specular, LightTiles,   // lab 08's G-buffer and tiles
+    AmbientOcclusion,                                   // lab 09's blurred occlusion
+    Cascades,                                           // lab 05: each cascade tinted
+    LevelsOfDetail                                      // lab 06: each object tinted by its level
+};
+/// The names the scene file and the renderer panel use: "final", "albedo",
+/// "normals", "positions", "specular", "tiles", "occlusion", "cascades", "lod".
+const char* toString(CourseView view);
+/// The view called `name`; false when there is none.
+bool courseViewFromName(const std::string& name, CourseView& view);
+/// Every view's name, in the enum's order.
+const std::vector<std::string>& courseViewNames();
+
+struct CourseSettings {
+    bool culling = true;             // false: every object drawn, at full detail
+    bool shadows = true;
+    PcfMode pcf = PcfMode::ThreeByThree;
+    int cascades = 3;                // 1..ShadowRenderer::kMaxCascades
+    float shadowFar = 90.0f;         // view depth where the last cascade ends, metres
+    int shadowMapSize = 1024;        // each cascade's, texels per side
+    bool normalMaps = true;
+    bool ambientOcclusion = true;
+    bool sky = true;                 // the skybox; false: a plain sky colour
+    CourseView view = CourseView::Final;
+    /// Wait for the GPU after each pass (glFinish) so that stats().seconds are
+    /// each pass's own time; slows the frame a little. For the benchmark.
+    bool timePasses = false;
+};
+
+struct CourseLighting {
+    glm::vec3 ambient{0.1f};
+    glm::vec3 sunDirection{-0.4f, -1.0f, -0.3f};   // the way the light travels
+    glm::vec3 sunColor{1.0f};
+    glm::vec3 skyColor{0.55f, 0.68f, 0.82f};       // where nothing was drawn, without the skybox
+    std::vector<PointLight> pointLights;
+    glm::vec3 sceneMin{-100.0f, 0.0f, -100.0f};    // the casters' world bounds: the cascades' depth range
+    glm::vec3 sceneMax{100.0f, 10.0f, 100.0f};
+};
+
+/// A crowd drawn into the G-buffer and the shadow maps (its agents only: the
+/// ground it walks is the caller's items).
+struct CourseCrowd {
+    const CrowdSimulation* simulation = nullptr;
+    CrowdRenderer* renderer = nullptr;
+    CrowdDrawOptions options;
+};
+
+struct CourseStats {
+    int objects = 0;                 // items given
+    int culled = 0;                  // outside the frustum
+    int tooSmall = 0;                // inside, but below the smallest size drawn
+    std::array<int, 4> perLevel{};   // drawn at level 0, 1, 2, 3 (and coarser)
+    int agents = 0;
+    int pointLights = 0;
+    long tileListEntries = 0;
+    std::array<double, static_cast<int>(CoursePass::Count)> seconds{};   // CPU time, each pass's own with timePasses
+    double totalSeconds = 0.0;
+};
+
+/// The students' functions the passes call. Unset ones switch their pass off
+/// (no culling, no cascades), so a track without those labs still draws.
+struct CourseLabCode {
+    /// Lab 06: false when `sphere` (world) lies outside what `viewProjection` sees.
+    std::function<bool(const BoundingSphere& sphere, const glm::mat4& viewProjection)> isVisible;
+    /// Lab 06: the level to draw out of `levelCount` (-1: too small to draw).
+    std::function<int(const BoundingSphere& sphere, const Camera& camera, int viewportHeight, int levelCount)> levelOf;
+    ShadowLabCode shadows;            // lab 05
+    DeferredLabCode deferred;         // lab 08
+    std::vector<glm::vec3> occlusionKernel;   // lab 09's ssaoKernel() and ssaoNoise()
+    std::vector<glm::vec3> occlusionNoise;
+};
+
+struct CoursePrograms {
+    using Loader = std::function<const Program&(const std::string& vertex, const std::string& fragment)>;
+    /// Loads every program the passes use (through `load`, which keeps them).
+    static CoursePrograms load(const Loader& load);
+    DeferredPrograms deferred;
+    const Program* geometry = nullptr;       // course/geometry.vert + course/geometry.frag
+    const Program* agents = nullptr;         // crowd/md2.vert + course/agents.frag
+    const Program* depth = nullptr;          // shadows/depth.vert + shadows/depth.frag
+    const Program* agentsDepth = nullptr;    // crowd/md2.vert + crowd/depth.frag
+    const Program* sun = nullptr;            // basic/image.vert + course/sun.frag
+    const Program* sky = nullptr;            // culling/skybox.vert + culling/skybox.frag
+    const Program* occlusion = nullptr;      // basic/image.vert + ssao/ssao.frag
+    const Program* blur = nullptr;           // basic/image.vert + ssao/blur.frag
+    const Program* grey = nullptr;           // basic/image.vert + ssao/ao_view.frag
+};
+
+class CourseRenderer {
+public:
+    /// Needs a current context; loads the sky's cube map from assets/sky.
+    CourseRenderer(const CoursePrograms& programs, CourseLabCode code);
+    ~CourseRenderer();
+
+    /// The whole frame at `size` pixels into the framebuffer bound when called.
+    /// `crowd` may be nullptr.
+    void render(const std::vector<CourseItem>& items, const CourseLighting& lighting, const Camera& camera,
+                glm::ivec2 size, const CourseSettings& settings, const CourseCrowd* crowd);
+
+    const CourseStats& stats() const { return m_stats; }
+    /// Each item's level in the last frame: -2 culled, -1 too small, else its level.
+    const std::vector<int>& levels() const { return m_levels; }
+
+private:
+    void cull(const std::vector<CourseItem>& items, const Camera& camera, glm::ivec2 size, const CourseSettings& settings);
+    void renderCascades(const std::vector<CourseItem>& items, const CourseLighting& lighting, const Camera& camera,
+                        glm::ivec2 size, const CourseSettings& settings, const CourseCrowd* crowd);
+    void renderGeometry(const std::vector<CourseItem>& items, const Camera& camera, glm::ivec2 size,
+                        const CourseSettings& settings, const CourseCrowd* crowd);
+    void drawSun(const CourseLighting& lighting, const Camera& camera, const CourseSettings& settings);
+    void drawSky(const Framebuffer& target);
+    void endPass(CoursePass pass, bool timed);
+
+    CoursePrograms m_programs;
+    CourseLabCode m_code;
+    std::unique_ptr<DeferredRenderer> m_deferred;
+    std::unique_ptr<AmbientOcclusionPass> m_occlusion;
+    std::array<Framebuffer, ShadowRenderer::kMaxCascades> m_cascadeMaps;
+    std::array<glm::mat4, ShadowRenderer::kMaxCascades> m_cascadeMatrices{};
+    std::vector<float> m_splits;
+    int m_cascadeCount = 0;
+    FrameUniforms m_lightFrame;      // a cascade's matrix as the projection, for the agents' depth pass
+    CubeMap m_sky;
+    GpuMesh m_skyCube;
+    TextureOverlay m_overlay;
+    std::vector<int> m_levels;
+    CourseStats m_stats;
+    glm::mat4 m_view{1.0f};
+    double m_passStart = 0.0;
+};
+
+} // namespace stoa

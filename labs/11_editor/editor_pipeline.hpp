@@ -1,0 +1,288 @@
+#pragma once
+// stoa-editor's deferred pipeline: the scene's objects with its wide field
+// (lab 06's culling and levels of detail), its wandering lights (lab 08) and
+// its crowd (lab 10), drawn by stoa::CourseRenderer with the students' code of
+// labs 04-10 (your own, when you build your track). Not one of lab 11's
+// exercises: EditorLabApp (editor_app.hpp) uses it when the renderer panel's
+// "deferred" is on, and the showcase (docs/showcase.md) is drawn by it.
+
+#include "../06_culling/culling.hpp"
+
+#include <stoa/camera/Camera.hpp>
+#include <stoa/core/HashRandom.hpp>
+#include <stoa/core/InputError.hpp>
+#include <stoa/core/Paths.hpp>
+#include <stoa/crowd/CrowdLab.hpp>
+#include <stoa/crowd/CrowdSimulation.hpp>
+#include <stoa/crowd/CrowdXml.hpp>
+#include <stoa/crowd/GroundMaps.hpp>
+#include <stoa/editor/EditorScene.hpp>
+#include <stoa/geometry/LevelOfDetail.hpp>
+#include <stoa/geometry/ObjLoader.hpp>
+#include <stoa/geometry/Shapes.hpp>
+#include <stoa/gl/GpuMesh.hpp>
+#include <stoa/gl/Program.hpp>
+#include <stoa/math/Transforms.hpp>
+#include <stoa/render/AmbientOcclusion.hpp>
+#include <stoa/render/CourseRenderer.hpp>
+#include <stoa/render/ShadowMapping.hpp>
+#include <stoa/scene/WanderingLights.hpp>
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace stoa {
+
+class EditorPipeline {
+public:
+    using Log = std::function<void(const std::string&)>;
+
+    /// `searchPath`: the lab's GLSL search path (the students' GLSL of labs 04-09 on it).
+    EditorPipeline(std::vector<std::filesystem::path> searchPath, Log log)
+        : m_searchPath(std::move(searchPath)), m_log(std::move(log)) {}
+
+    /// Builds what `scene` needs that differs from the last scene's: the field's
+    /// meshes and levels, the crowd. `folder`: the scene file's folder (assets
+    /// are looked for there first, then in assets/). Bad assets go to the log.
+    void prepare(const EditorScene& scene, const std::filesystem::path& folder) {
+        if (!m_renderer) makeRenderer();
+        if (scene.field.meshes != m_fieldMeshNames) buildFieldMeshes(scene.field.meshes, folder);
+        if (scene.crowdWorld != m_crowdName) loadCrowd(scene.crowdWorld, folder);
+    }
+
+    /// Moves the crowd and the wandering lights on by `seconds` of wall time.
+    void advance(double seconds) {
+        m_seconds += seconds;
+        if (!m_crowd) return;
+        m_crowdDebt += seconds;
+        const double step = m_crowd->world().step;
+        int steps = 0;
+        while (m_crowdDebt >= step && steps < 8) {   // at most 8 steps a frame: a slow frame slows the crowd
+            m_crowd->step();
+            m_crowdDebt -= step;
+            ++steps;
+        }
+        if (m_crowdDebt > step) m_crowdDebt = 0.0;
+        noteFootsteps();
+    }
+
+    /// The frame: `objects` (the editor's, built from the scene) with the
+    /// field, the wandering lights and the crowd.
+    void render(const EditorScene& scene, std::vector<CourseItem> objects, std::vector<PointLight> lights,
+                const Material* fieldMaterial, const Texture2D* fieldDiffuse, const Camera& camera, glm::ivec2 size,
+                const CourseSettings& settings) {
+        appendField(scene.field, fieldMaterial, fieldDiffuse, objects);
+        if (scene.lightSwarm.count > 0) {
+            WanderingLightsOptions options;
+            options.count = scene.lightSwarm.count;
+            options.seed = static_cast<std::uint32_t>(scene.lightSwarm.seed);
+            options.regionMin = {-scene.lightSwarm.radius, 0.3f, -scene.lightSwarm.radius};
+            options.regionMax = {scene.lightSwarm.radius, scene.lightSwarm.height, scene.lightSwarm.radius};
+            options.brightness = scene.lightSwarm.brightness;
+            const std::vector<PointLight> swarm = wanderingLights(options, static_cast<float>(m_seconds));
+            lights.insert(lights.end(), swarm.begin(), swarm.end());
+        }
+        CourseLighting lighting;
+        lighting.ambient = scene.ambient;
+        lighting.sunDirection = scene.sunDirection;
+        lighting.sunColor = scene.sunColor;
+        lighting.pointLights = std::move(lights);
+        const float extent = std::max(20.0f, 0.5f * scene.field.spacing * static_cast<float>(scene.field.rows) + 10.0f);
+        lighting.sceneMin = {-extent, -1.0f, -extent};
+        lighting.sceneMax = {extent, 12.0f, extent};
+        CourseCrowd crowd;
+        if (m_crowd) {
+            crowd.simulation = m_crowd.get();
+            crowd.renderer = m_crowdRenderer.get();
+            crowd.options.markers = false;
+        }
+        m_renderer->render(objects, lighting, camera, size, settings, m_crowd ? &crowd : nullptr);
+    }
+
+    const CourseStats& stats() const { return m_renderer->stats(); }
+    const CrowdSimulation* crowd() const { return m_crowd.get(); }
+    /// Where agents set a foot down since the last call (for the footsteps' sound).
+    std::vector<glm::vec3> takeFootsteps() {
+        std::vector<glm::vec3> steps;
+        steps.swap(m_footsteps);
+        return steps;
+    }
+    double seconds() const { return m_seconds; }
+    void setSeconds(double seconds) { m_seconds = seconds; }
+
+    /// Lab 06's verdicts as CourseRenderer asks for them (the student's functions).
+    static CourseLabCode labCode() {
+        CourseLabCode code;
+        auto frustum = std::make_shared<std::pair<glm::mat4, Frustum>>(glm::mat4(0.0f), Frustum{});
+        code.isVisible = [frustum](const BoundingSphere& sphere, const glm::mat4& viewProjection) {
+            if (frustum->first != viewProjection) *frustum = {viewProjection, frustumPlanes(viewProjection)};
+            return sphereInFrustum(frustum->second, sphere);
+        };
+        code.levelOf = [](const BoundingSphere& sphere, const Camera& camera, int height, int levelCount) {
+            return levelOfDetail(lodQuality(sphere, camera.eyePosition(), camera.fovYDegrees(), height), levelCount);
+        };
+        code.shadows = ShadowLabCode::fromLab05();
+        code.deferred = DeferredLabCode::fromLab08();
+        code.occlusionKernel = ssaoKernel(32, 1);
+        code.occlusionNoise = ssaoNoise(2);
+        return code;
+    }
+
+private:
+    struct FieldMesh {
+        std::vector<std::unique_ptr<GpuMesh>> levels;
+        BoundingSphere sphere;   // object space
+    };
+
+    void makeRenderer() {
+        const auto load = [&](const std::string& vertex, const std::string& fragment) -> const Program& {
+            m_programs.push_back(std::make_unique<Program>(Program::fromFiles(vertex, fragment, m_searchPath)));
+            return *m_programs.back();
+        };
+        m_crowdPrograms = CrowdPrograms::load(load);
+        m_renderer = std::make_unique<CourseRenderer>(CoursePrograms::load(load), labCode());
+    }
+
+    std::filesystem::path resolve(const std::string& name, const std::filesystem::path& folder,
+                                  const std::filesystem::path& assets) const {
+        std::error_code error;
+        for (const std::filesystem::path& candidate : {folder / name, assets / name})
+            if (std::filesystem::is_regular_file(candidate, error)) return candidate;
+        return {};
+    }
+
+    void buildFieldMeshes(const std::vector<std::string>& names, const std::filesystem::path& folder) {
+        m_fieldMeshNames = names;
+        m_fieldMeshes.clear();
+        for (const std::string& name : names) {
+            try {
+                Mesh mesh;
+                if (name == "shape:cube") mesh = shapes::cube(1.0f);
+                else if (name == "shape:sphere") mesh = shapes::sphere(0.5f, 32, 16);
+                else if (name == "shape:cylinder") mesh = shapes::cylinder(0.5f, 1.0f, 32);
+                else {
+                    const std::filesystem::path path = resolve(name, folder, paths::assetsDir());
+                    if (path.empty()) throw InputError(name, 0, "no such file next to the scene file or in assets/");
+                    mesh = loadObj(path).parts.front().mesh;
+                }
+                FieldMesh field;
+                field.sphere = meshBoundingSphere(mesh);   // the student's (lab 06)
+                for (const LodLevel& level : buildLevelsOfDetail(mesh, {1.0f, 0.5f, 0.25f, 0.1f}, 0.2f))
+                    field.levels.push_back(std::make_unique<GpuMesh>(level.mesh));
+                m_fieldMeshes.push_back(std::move(field));
+            } catch (const InputError& error) {
+                m_log(std::string("field: cannot use the mesh ") + name + ": " + error.what());
+            }
+        }
+        m_placements.clear();
+    }
+
+    // Rows x rows jittered places, each with a mesh, a turn and a size; the
+    // ground near the origin left to the scene's own objects.
+    void appendField(const EditorField& field, const Material* material, const Texture2D* diffuse,
+                     std::vector<CourseItem>& items) {
+        if (m_fieldMeshes.empty()) return;
+        if (m_placements.empty() || m_placedFor.rows != field.rows || m_placedFor.spacing != field.spacing ||
+            m_placedFor.clearRadius != field.clearRadius || m_placedFor.seed != field.seed) {
+            m_placedFor = field;
+            m_placements.clear();
+            HashRandom random(static_cast<std::uint32_t>(field.seed));
+            const float half = 0.5f * field.spacing * static_cast<float>(field.rows - 1);
+            for (int i = 0; i < field.rows; ++i)
+                for (int j = 0; j < field.rows; ++j) {
+                    const float jitter = 0.3f * field.spacing;
+                    const glm::vec3 position(-half + field.spacing * i + random.between(-jitter, jitter), 0.0f,
+                                             -half + field.spacing * j + random.between(-jitter, jitter));
+                    const float yaw = random.between(0.0f, 360.0f);
+                    const float size = random.between(0.8f, 1.6f);
+                    const auto mesh = static_cast<std::size_t>(random.next() * m_fieldMeshes.size()) % m_fieldMeshes.size();
+                    if (std::abs(position.x) < field.clearRadius && std::abs(position.z) < field.clearRadius) continue;
+                    Placement placement;
+                    placement.mesh = mesh;
+                    placement.model = modelMatrix(position, {0.0f, yaw, 0.0f}, glm::vec3(size));
+                    placement.sphere = worldBoundingSphere(m_fieldMeshes[mesh].sphere, placement.model);   // the student's
+                    m_placements.push_back(placement);
+                }
+        }
+        for (const Placement& placement : m_placements) {
+            CourseItem item;
+            for (const std::unique_ptr<GpuMesh>& level : m_fieldMeshes[placement.mesh].levels) item.levels.push_back(level.get());
+            item.model = placement.model;
+            item.normalMatrix = glm::inverseTranspose(glm::mat3(placement.model));
+            item.material = material;
+            item.diffuseMap = diffuse;
+            item.sphere = placement.sphere;
+            items.push_back(item);
+        }
+    }
+
+    void loadCrowd(const std::string& name, const std::filesystem::path& folder) {
+        m_crowdName = name;
+        m_crowdRenderer.reset();
+        m_crowd.reset();
+        m_walked.clear();
+        if (name.empty()) return;
+        try {
+            const std::filesystem::path path = resolve(name, folder, paths::assetsDir() / "crowds");
+            if (path.empty()) throw InputError(name, 0, "no such world file next to the scene file or in assets/crowds/");
+            const CrowdWorld world = loadCrowdWorld(path);
+            m_crowd = std::make_unique<CrowdSimulation>(world, loadGroundMaps(world.ground, world.file),
+                                                        CrowdLabCode::fromLab10());
+            m_crowd->advance(static_cast<int>(std::lround(3.0 / world.step)));   // three seconds: the agents on their way
+            m_crowdRenderer = std::make_unique<CrowdRenderer>(m_crowdPrograms, *m_crowd);
+            m_walked.assign(m_crowd->agents().size(), {glm::vec2(0.0f), 0.0f});
+            for (std::size_t i = 0; i < m_walked.size(); ++i) m_walked[i].first = m_crowd->agents()[i].position;
+        } catch (const InputError& error) {
+            m_crowd.reset();
+            m_log(std::string("crowd: ") + error.what());
+        }
+    }
+
+    // A footstep each stride an agent walks.
+    void noteFootsteps() {
+        constexpr float kStride = 1.6f;
+        const std::vector<CrowdAgent>& agents = m_crowd->agents();
+        m_walked.resize(agents.size(), {glm::vec2(0.0f), 0.0f});
+        for (std::size_t i = 0; i < agents.size(); ++i) {
+            auto& [last, distance] = m_walked[i];
+            const float moved = glm::length(agents[i].position - last);
+            last = agents[i].position;
+            if (!agents[i].alive || moved > 2.0f) continue;   // respawned: no step
+            distance += moved;
+            if (distance < kStride) continue;
+            distance -= kStride;
+            m_footsteps.emplace_back(agents[i].position.x, agents[i].y, agents[i].position.y);
+        }
+    }
+
+    struct Placement {
+        std::size_t mesh = 0;
+        glm::mat4 model{1.0f};
+        BoundingSphere sphere;
+    };
+
+    std::vector<std::filesystem::path> m_searchPath;
+    Log m_log;
+    std::vector<std::unique_ptr<Program>> m_programs;
+    CrowdPrograms m_crowdPrograms;
+    std::unique_ptr<CourseRenderer> m_renderer;
+    std::vector<std::string> m_fieldMeshNames;
+    std::vector<FieldMesh> m_fieldMeshes;
+    EditorField m_placedFor;
+    std::vector<Placement> m_placements;
+    std::string m_crowdName;
+    std::unique_ptr<CrowdSimulation> m_crowd;
+    std::unique_ptr<CrowdRenderer> m_crowdRenderer;
+    std::vector<std::pair<glm::vec2, float>> m_walked;   // per agent: last position, distance since its last footstep
+    std::vector<glm::vec3> m_footsteps;
+    double m_crowdDebt = 0.0;
+    double m_seconds = 0.0;
+};
+
+} // namespace stoa
