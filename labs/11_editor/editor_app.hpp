@@ -292,7 +292,8 @@ public:
     }
 
     /// stoa-editor in a window: the wind loops, spawning and deleting make a
-    /// sound where it happens, and the listener follows the camera (k mutes).
+    /// sound where it happens, a crowd's agents make footsteps (deferred
+    /// pipeline), and the listener follows the camera (k mutes).
     bool soundInWindow = false;
     /// The deferred pipeline waits for each pass to finish, so that its
     /// statistics hold each pass's own time (the showcase benchmark).
@@ -822,12 +823,24 @@ private:
             try {
                 const auto clip = [](const char* name) { return SoundClip::fromFile(paths::assetsDir() / "sounds" / name).mono(); };
                 m_sparkSound = m_sound->upload(clip("spark.ogg"));
+                m_footstepSound = m_sound->upload(clip("footstep.ogg"));
                 m_sound->playAmbient(m_sound->upload(clip("ambient_wind.ogg")), 0.25f);
             } catch (const std::exception& error) {
                 log(std::string("sound: ") + error.what());
             }
         }
         m_sound->setListener(camera.eyePosition(), camera.lookTarget() - camera.eyePosition(), camera.upVector());
+        if (m_pipeline) {
+            // The crowd's footsteps (deferred pipeline): the nearest few of each frame, so that twenty
+            // walkers do not take every source.
+            std::vector<glm::vec3> steps = m_pipeline->takeFootsteps();
+            const glm::vec3 ear = camera.eyePosition();
+            std::sort(steps.begin(), steps.end(), [&](const glm::vec3& a, const glm::vec3& b) {
+                return glm::length(a - ear) < glm::length(b - ear);
+            });
+            for (std::size_t i = 0; i < steps.size() && i < 3; ++i)
+                if (glm::length(steps[i] - ear) < 40.0f && m_footstepSound.id != 0) m_sound->play(m_footstepSound, steps[i], 0.5f);
+        }
         m_sound->update();
     }
 
@@ -990,6 +1003,7 @@ private:
                 item.normalMap = found && !m_tangentsMissing ? normalMap(found->normalMap) : nullptr;
                 for (const GpuMesh* mesh : m_assets->meshes(object.mesh)) {
                     item.levels = {mesh};
+                    item.sphere = transformed(mesh->bounds(), item.model).sphere;   // culled, one level
                     items.push_back(item);
                 }
             }
@@ -1209,6 +1223,7 @@ private:
     std::vector<std::string> m_modelNames;   // the asset panel's list
     std::unique_ptr<SoundDevice> m_sound;    // made at the first frame of soundInWindow
     SoundBuffer m_sparkSound;
+    SoundBuffer m_footstepSound;
     std::string m_shaderName;                // the shader panel's program and text
     std::string m_shaderText;
     int m_shaderFileVersion = 0;             // the file's program version m_shaderText was read at

@@ -5,9 +5,12 @@
 #include "deferred/lighting.glsl"
 #include "05_shadows/shadows.glsl"
 // The course pipeline's sun (stoa/render/CourseRenderer.hpp), added to the
-// light buffer after the point lights: Blinn-Phong from the G-buffer, times
-// lab 05's umbra shade with s from the cascade the student's cascades.glsl
-// picks. In the "cascades" view it writes each cascade's tint instead.
+// light buffer after the point lights: Blinn-Phong from the G-buffer times s,
+// the shadow factor of the cascade the student's cascades.glsl picks (lab 05).
+// Not lab 05's umbraShade(), which keeps half the light in full shadow: its
+// scenes have one light, this one has an ambient term and hundreds of others,
+// under which a half shadow hardly shows. In the "cascades" view it writes
+// each cascade's tint instead.
 
 #define MAX_CASCADES 4
 
@@ -66,5 +69,5 @@ void main() {
         fragColor = vec4(cascadeTint(uShadowsEnabled ? cascade : MAX_CASCADES) * surface.albedo * (0.35 + 0.65 * lit), 1.0);
         return;
     }
-    fragColor = vec4(umbraShade(vec3(0.0), lightOut, s), 1.0);
+    fragColor = vec4(s * lightOut, 1.0);
 }

@@ -8,6 +8,13 @@
       The mean colour "r g b" (0..255) of the 5 x 5 pixels around (X, Y).
   editor_check.py write-png IMAGE.png R G B
       A 64 x 64 RGB PNG of one colour (0..255 each).
+  editor_check.py band IMAGE.png TOP BOTTOM
+      Over rows TOP..BOTTOM-1 (fractions of the height, 0..1): "r g b coloured"
+      with the mean colour (0..255) and the percentage of strongly coloured
+      pixels (brightest channel at least 60 above the dimmest).
+  editor_check.py differ A.png B.png
+      The percentage of pixels whose colours differ by more than 24 in a channel
+      (the two pictures the same size).
   editor_check.py moved ORIGINAL.json SAVED.json OBJECT
       Passes (exit 0) when SAVED differs from ORIGINAL only in OBJECT's x
       position, by more than 0.1, and says by how much; otherwise says what
@@ -104,6 +111,33 @@ def check_moved(original_file, saved_file, name):
     return problems
 
 
+def band_statistics(path, top, bottom):
+    width, height, channels, rows = read_png(path)
+    sums, coloured, count = [0, 0, 0], 0, 0
+    for y in range(int(top * height), int(bottom * height)):
+        row = rows[y]
+        for x in range(width):
+            pixel = row[x * channels:x * channels + 3]
+            for i in range(3):
+                sums[i] += pixel[i]
+            coloured += max(pixel) - min(pixel) >= 60
+            count += 1
+    return [round(v / max(count, 1)) for v in sums] + [round(100.0 * coloured / max(count, 1), 1)]
+
+
+def differing_percent(a_path, b_path):
+    wa, ha, ca, a = read_png(a_path)
+    wb, hb, cb, b = read_png(b_path)
+    if (wa, ha) != (wb, hb):
+        raise SystemExit(f"{a_path} is {wa}x{ha}, {b_path} is {wb}x{hb}")
+    differing = 0
+    for y in range(ha):
+        for x in range(wa):
+            pa, pb = a[y][x * ca:x * ca + 3], b[y][x * cb:x * cb + 3]
+            differing += any(abs(pa[i] - pb[i]) > 24 for i in range(3))
+    return round(100.0 * differing / (wa * ha), 1)
+
+
 def main(argv):
     command = argv[1] if len(argv) > 1 else ""
     if command == "pixel" and len(argv) == 8:
@@ -111,6 +145,10 @@ def main(argv):
         print(f"{round(x)} {round(y)}")
     elif command == "colour" and len(argv) == 5:
         print(*mean_colour(argv[2], int(argv[3]), int(argv[4])))
+    elif command == "band" and len(argv) == 5:
+        print(*band_statistics(argv[2], float(argv[3]), float(argv[4])))
+    elif command == "differ" and len(argv) == 4:
+        print(differing_percent(argv[2], argv[3]))
     elif command == "write-png" and len(argv) == 6:
         write_png(argv[2], [int(v) for v in argv[3:6]])
     elif command == "moved" and len(argv) == 5:

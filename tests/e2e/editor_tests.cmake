@@ -7,6 +7,10 @@
 #                                     program keeps drawing, the fix compiles
 #   editor_renderer_settings          deferred shading, ambient occlusion, the normals view (no window)
 #   editor_bad_scene_named            broken scene files and command lines (no window)
+#   editor_showcase.BACKEND           the showcase headless: sky, lights, shadows; on the
+#                                     last backend every debug view too (no window)
+#   window_showcase                   stoa-editor --scene showcase in a window: a frame, and
+#                                     the crowd and lights moving
 # The window tests take the Xvfb lock as the e2e.window_* tests do.
 if(TARGET stoa-editor)
   set(editor_window_tests "")
@@ -20,13 +24,26 @@ if(TARGET stoa-editor)
     add_test(NAME e2e.editor_shader_error_keeps_drawing
              COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/editor_shader_error_keeps_drawing.sh $<TARGET_FILE:stoa-editor>
                      ${work}/editor-shader-error)
+    add_test(NAME e2e.window_showcase
+             COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/window_showcase.sh $<TARGET_FILE:stoa-editor> ${work}/window-showcase)
     list(APPEND editor_window_tests e2e.editor_edit_save_reload e2e.editor_texture_reload
-                e2e.editor_shader_error_keeps_drawing)
+                e2e.editor_shader_error_keeps_drawing e2e.window_showcase)
     set_tests_properties(${editor_window_tests} PROPERTIES RESOURCE_LOCK xvfb)
     # Headless: the scene file's renderer settings drawn (forward, deferred, occlusion, normals).
     add_test(NAME e2e.editor_renderer_settings
              COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/editor_renderer_settings.sh $<TARGET_FILE:stoa-editor>
                      ${CMAKE_SOURCE_DIR} ${work}/editor-renderer-settings)
+    # The showcase on each headless backend; the debug views on the last one.
+    list(GET backends -1 last_backend)
+    foreach(backend IN LISTS backends)
+      set(views "")
+      if(backend STREQUAL last_backend)
+        set(views views)
+      endif()
+      add_test(NAME e2e.editor_showcase.${backend}
+               COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/editor_showcase.sh $<TARGET_FILE:stoa-editor> ${CMAKE_SOURCE_DIR}
+                       ${work}/editor-showcase-${backend} ${backend} ${views})
+    endforeach()
   else()
     message(WARNING "python3 not found: the stoa-editor window tests (e2e.editor_*) are skipped")
   endif()
