@@ -1,4 +1,4 @@
-// showcase_benchmark [--runs R] [--size WxH]: the showcase (stoa-editor
+// showcase_benchmark [--runs R] [--size WxH] [--picture FILE.png]: the showcase (stoa-editor
 // --scene showcase, docs/showcase.md) drawn headless with the solutions' code,
 // medians of R frames (default 7) at 1280x720:
 //   - the frame time as the editor draws it (no waits between passes);
@@ -7,7 +7,8 @@
 //     waits cost little, but the sum is a little above the frame time);
 //   - what the frame held: objects culled, too small and drawn per level of
 //     detail, point lights and their tile-list entries, agents.
-// The crowd walks and the lights wander 1/30 s between frames.
+// The crowd walks and the lights wander 1/30 s between frames. --picture saves
+// the last frame (to compare a GPU's picture with llvmpipe's).
 
 #include "BenchmarkTiming.hpp"
 
@@ -29,7 +30,7 @@ using namespace stoa::benchmark;
 
 namespace {
 
-void showcaseFigures(int runs, glm::ivec2 size) {
+void showcaseFigures(int runs, glm::ivec2 size, const std::string& picture) {
     const std::filesystem::path scene = paths::assetsDir() / "scenes" / "showcase.json";
     const EditorScene loaded = loadEditorScene(scene);
     std::ostringstream cases;
@@ -79,6 +80,10 @@ void showcaseFigures(int runs, glm::ivec2 size) {
     std::printf("  %d objects: %d culled, %d too small, drawn at level 0/1/2/3: %d/%d/%d/%d\n", last.objects, last.culled,
                 last.tooSmall, last.perLevel[0], last.perLevel[1], last.perLevel[2], last.perLevel[3]);
     std::printf("  %d point lights (%ld tile-list entries), %d agents\n", last.pointLights, last.tileListEntries, last.agents);
+    if (!picture.empty()) {
+        target.readColor().savePng(picture);
+        std::printf("  the last frame: %s\n", picture.c_str());
+    }
 }
 
 } // namespace
@@ -86,6 +91,7 @@ void showcaseFigures(int runs, glm::ivec2 size) {
 int main(int argc, char** argv) {
     int runs = 7;
     glm::ivec2 size(1280, 720);
+    std::string picture;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--runs") == 0 && i + 1 < argc) {
             runs = std::atoi(argv[++i]);
@@ -100,14 +106,16 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "showcase_benchmark: --size takes WIDTHxHEIGHT, e.g. 1280x720\n");
                 return 2;
             }
+        } else if (std::strcmp(argv[i], "--picture") == 0 && i + 1 < argc) {
+            picture = argv[++i];
         } else {
-            std::fprintf(stderr, "usage: showcase_benchmark [--runs R] [--size WxH]\n");
+            std::fprintf(stderr, "usage: showcase_benchmark [--runs R] [--size WxH] [--picture FILE.png]\n");
             return 2;
         }
     }
     try {
         std::printf("showcase_benchmark\n");
-        showcaseFigures(runs, size);
+        showcaseFigures(runs, size, picture);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "showcase_benchmark: %s\n", error.what());
         return 1;
