@@ -190,6 +190,14 @@ public:
         }
         if (!m_sceneFile.empty()) reloadChangedAssets();
         if (soundInWindow) updateSound(camera);
+        if (m_pipeline) {
+            for (const glm::vec3& burst : m_pipeline->takeSparkBursts()) {   // lab 07's ball hit something
+                char line[96];
+                std::snprintf(line, sizeof line, "sparks at (%.2f, %.2f, %.2f)", burst.x, burst.y, burst.z);
+                log(line);
+                playSound(m_sparkSound, burst);
+            }
+        }
         if (m_view == View::Stencil) {
             drawStencilView();
             return;
@@ -229,6 +237,21 @@ public:
             return true;
         }
         case 'x': deleteSelection(); return true;
+        case 'b': {   // lab 07's ball, thrown from the eye along the view (deferred pipeline)
+            if (!m_scene.renderer.deferred || !m_pipeline) {
+                log("the ball (b) bounces in the deferred pipeline: switch it on in the renderer panel");
+                return true;
+            }
+            const Camera& camera = m_cameras.active();
+            try {
+                m_pipeline->throwBall(m_scene, m_sceneFile.empty() ? paths::assetsDir() : m_sceneFile.parent_path(),
+                                      camera.eyePosition(), camera.lookTarget() - camera.eyePosition());
+                log("ball thrown");
+            } catch (const NotImplemented& missing) {
+                log(std::string("the ball needs ") + missing.what());
+            }
+            return true;
+        }
         case 'k':
             if (!m_sound || !m_sound->enabled()) return false;
             m_sound->setMuted(!m_sound->muted());
@@ -333,6 +356,7 @@ public:
                 "drag arrow   move the selection along the gizmo's x, y or z arrow",
                 "u / r        undo / redo",
                 "m / x        next material for the selection / delete it",
+                "b            throw a ball (deferred pipeline: lab 07's BVH bounce, sparks)",
                 "v            switch view: shaded / the stencil pick pass",
                 "Ctrl+S       save the scene file (stoa-editor)"};
     }

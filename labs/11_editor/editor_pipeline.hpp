@@ -1,12 +1,14 @@
 #pragma once
 // stoa-editor's deferred pipeline: the scene's objects with its wide field
-// (lab 06's culling and levels of detail), its wandering lights (lab 08) and
-// its crowd (lab 10), drawn by stoa::CourseRenderer with the students' code of
-// labs 04-10 (your own, when you build your track). Not one of lab 11's
+// (lab 06's culling and levels of detail), its wandering lights (lab 08), its
+// crowd (lab 10) and a ball thrown into it that bounces off the triangles of a
+// BVH and throws sparks (lab 07), drawn by stoa::CourseRenderer with the
+// students' code of labs 04-10 (your own, when you build your track). Not one of lab 11's
 // exercises: EditorLabApp (editor_app.hpp) uses it when the renderer panel's
 // "deferred" is on, and the showcase (docs/showcase.md) is drawn by it.
 
 #include "../06_culling/culling.hpp"
+#include "../07_picking/bounce.hpp"
 
 #include <stoa/camera/Camera.hpp>
 #include <stoa/core/HashRandom.hpp>
@@ -20,8 +22,12 @@
 #include <stoa/geometry/LevelOfDetail.hpp>
 #include <stoa/geometry/ObjLoader.hpp>
 #include <stoa/geometry/Shapes.hpp>
+#include <stoa/gl/Buffer.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/gl/RenderPass.hpp>
+#include <stoa/gl/StateCache.hpp>
+#include <stoa/gl/VertexArray.hpp>
 #include <stoa/math/Transforms.hpp>
 #include <stoa/render/AmbientOcclusion.hpp>
 #include <stoa/render/CourseRenderer.hpp>
@@ -29,9 +35,12 @@
 #include <stoa/scene/WanderingLights.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <optional>
 #include <functional>
 #include <memory>
 #include <string>
@@ -59,6 +68,7 @@ public:
     /// Moves the crowd and the wandering lights on by `seconds` of wall time.
     void advance(double seconds) {
         m_seconds += seconds;
+        advanceBall(static_cast<float>(seconds));
         if (!m_crowd) return;
         m_crowdDebt += seconds;
         const double step = m_crowd->world().step;
@@ -102,7 +112,50 @@ public:
             crowd.renderer = m_crowdRenderer.get();
             crowd.options.markers = false;
         }
-        m_renderer->render(objects, lighting, camera, size, settings, m_crowd ? &crowd : nullptr);
+        if (m_ballFlying) {
+            CourseItem ball;
+            ball.levels = {m_ballMesh.get()};
+            ball.model = glm::scale(glm::translate(glm::mat4(1.0f), m_bounce.ball.position), glm::vec3(m_bounce.ball.radius));
+            ball.material = &m_ballMaterial;
+            objects.push_back(ball);
+        }
+        m_renderer->render(objects, lighting, camera, size, settings, m_crowd ? &crowd : nullptr,
+                           [this](const Framebuffer& lightBuffer) { drawSparks(lightBuffer); });
+    }
+
+    /// Throws lab 07's ball from `from` along `direction` (12 m/s) into the
+    /// scene's objects: their triangles in world space go into a BVH (the
+    /// student's buildBvh()); the ball bounces off them (advanceSimulation()).
+    void throwBall(const EditorScene& scene, const std::filesystem::path& folder, const glm::vec3& from,
+                   const glm::vec3& direction) {
+        std::vector<Triangle> triangles;
+        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+            const EditorObject& object = scene.objects[i];
+            const glm::mat4 model = modelMatrix(object.position, object.rotationDegrees, object.scale);
+            for (const Mesh& mesh : cpuMeshes(object.mesh, folder))
+                for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+                    Triangle triangle;
+                    triangle.p0 = glm::vec3(model * glm::vec4(mesh.vertices[mesh.indices[t]].position, 1.0f));
+                    triangle.p1 = glm::vec3(model * glm::vec4(mesh.vertices[mesh.indices[t + 1]].position, 1.0f));
+                    triangle.p2 = glm::vec3(model * glm::vec4(mesh.vertices[mesh.indices[t + 2]].position, 1.0f));
+                    triangle.object = static_cast<int>(i);
+                    triangles.push_back(triangle);
+                }
+        }
+        m_bvh = buildBvh(std::move(triangles));   // the student's (lab 07)
+        const SparkRandom random = m_bounce.random;   // each throw's sparks differ
+        m_bounce = Simulation{};
+        m_bounce.random = random;
+        m_bounce.ball.position = from;
+        m_bounce.ball.velocity = glm::normalize(direction) * 12.0f;
+        m_ballFlying = true;
+    }
+
+    /// Where sparks flew since the last call (for their sound).
+    std::vector<glm::vec3> takeSparkBursts() {
+        std::vector<glm::vec3> bursts;
+        bursts.swap(m_bursts);
+        return bursts;
     }
 
     const CourseStats& stats() const { return m_renderer->stats(); }
@@ -140,6 +193,55 @@ private:
         BoundingSphere sphere;   // object space
     };
 
+    void advanceBall(float seconds) {
+        if (!m_ballFlying || !m_bvh) return;
+        const int before = m_bounce.contacts;
+        advanceSimulation(m_bounce, *m_bvh, std::min(seconds, 0.5f));   // the student's (lab 07); a stall skips ahead
+        if (m_bounce.contacts > before && !m_bounce.particles.empty()) m_bursts.push_back(m_bounce.particles.back().position);
+        // Fallen off the world, or resting with its sparks gone: put away.
+        const bool resting = glm::length(m_bounce.ball.velocity) < 0.05f && m_bounce.particles.empty();
+        if (m_bounce.ball.position.y < -30.0f || resting) m_ballFlying = false;
+    }
+
+    // The sparks: additive billboards (lab 07's particles.glsl), depth-tested
+    // against the G-buffer's copy, not written.
+    void drawSparks(const Framebuffer& lightBuffer) {
+        if (!m_ballFlying || m_bounce.particles.empty()) return;
+        std::vector<float> sparks;
+        sparks.reserve(4 * m_bounce.particles.size());
+        for (const Particle& spark : m_bounce.particles)
+            sparks.insert(sparks.end(), {spark.position.x, spark.position.y, spark.position.z, spark.age / spark.lifetime});
+        m_sparkBuffer->upload(sparks, GL_STREAM_DRAW);
+        RenderState state;
+        state.depth.write = false;
+        state.cull = CullMode::None;
+        state.blend = BlendMode::Additive;
+        beginPass(passInto(lightBuffer, state));
+        m_sparkProgram->use();
+        m_sparkProgram->set("uHalfSize", 0.07f);
+        m_sparkArray->bind();
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(m_bounce.particles.size()));
+    }
+
+    // The CPU meshes of a scene object's mesh name (for the BVH), loaded once.
+    const std::vector<Mesh>& cpuMeshes(const std::string& name, const std::filesystem::path& folder) {
+        auto found = m_cpuMeshes.find(name);
+        if (found != m_cpuMeshes.end()) return found->second;
+        std::vector<Mesh>& meshes = m_cpuMeshes[name];
+        if (name == "shape:cube") meshes.push_back(shapes::cube(1.0f));
+        else if (name == "shape:sphere") meshes.push_back(shapes::sphere(0.5f, 32, 16));
+        else if (name == "shape:cylinder") meshes.push_back(shapes::cylinder(0.5f, 1.0f, 32));
+        else if (name == "shape:plane") meshes.push_back(shapes::plane(1.0f, 1));
+        else if (const std::filesystem::path path = resolve(name, folder, paths::assetsDir()); !path.empty()) {
+            try {
+                for (ModelPart& part : loadObj(path).parts) meshes.push_back(std::move(part.mesh));
+            } catch (const InputError& error) {
+                m_log(std::string("the ball goes through ") + name + ": " + error.what());
+            }
+        }
+        return meshes;
+    }
+
     void makeRenderer() {
         const auto load = [&](const std::string& vertex, const std::string& fragment) -> const Program& {
             m_programs.push_back(std::make_unique<Program>(Program::fromFiles(vertex, fragment, m_searchPath)));
@@ -147,6 +249,15 @@ private:
         };
         m_crowdPrograms = CrowdPrograms::load(load);
         m_renderer = std::make_unique<CourseRenderer>(CoursePrograms::load(load), labCode());
+        m_sparkProgram = &load("picking/sparks.vert", "picking/sparks.frag");
+        m_sparkProgram->bindUniformBlock(FrameUniforms::kBlockName, FrameUniforms::kBinding);
+        m_sparkBuffer = std::make_unique<Buffer>(GL_ARRAY_BUFFER);
+        m_sparkArray = std::make_unique<VertexArray>();
+        m_sparkArray->attribute(0, *m_sparkBuffer, 4, GL_FLOAT, 4 * sizeof(float), 0);
+        m_sparkArray->divisor(0, 1);
+        m_ballMesh = std::make_unique<GpuMesh>(shapes::sphere(1.0f, 24, 12));
+        m_ballMaterial.diffuse = m_ballMaterial.ambient = glm::vec3(0.85f, 0.3f, 0.12f);
+        m_ballMaterial.specular = glm::vec3(0.6f);
     }
 
     std::filesystem::path resolve(const std::string& name, const std::filesystem::path& folder,
@@ -283,6 +394,17 @@ private:
     std::vector<glm::vec3> m_footsteps;
     double m_crowdDebt = 0.0;
     double m_seconds = 0.0;
+    // Lab 07's ball and sparks.
+    std::map<std::string, std::vector<Mesh>> m_cpuMeshes;
+    std::optional<Bvh> m_bvh;
+    Simulation m_bounce;
+    bool m_ballFlying = false;
+    std::vector<glm::vec3> m_bursts;
+    const Program* m_sparkProgram = nullptr;
+    std::unique_ptr<Buffer> m_sparkBuffer;
+    std::unique_ptr<VertexArray> m_sparkArray;
+    std::unique_ptr<GpuMesh> m_ballMesh;
+    Material m_ballMaterial;
 };
 
 } // namespace stoa

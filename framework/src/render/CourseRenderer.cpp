@@ -47,7 +47,7 @@ const char* toString(CoursePass pass) {
     case CoursePass::Geometry: return "G-buffer";
     case CoursePass::Occlusion: return "ambient occlusion";
     case CoursePass::Lighting: return "lights and sun";
-    case CoursePass::Sky: return "skybox";
+    case CoursePass::Sky: return "skybox, sparks";
     case CoursePass::Present: return "present";
     case CoursePass::Count: break;
     }
@@ -105,7 +105,8 @@ void CourseRenderer::endPass(CoursePass pass, bool timed) {
 }
 
 void CourseRenderer::render(const std::vector<CourseItem>& items, const CourseLighting& lighting, const Camera& camera,
-                            glm::ivec2 size, const CourseSettings& settings, const CourseCrowd* crowd) {
+                            glm::ivec2 size, const CourseSettings& settings, const CourseCrowd* crowd,
+                            const GlowPass& glow) {
     const GLuint output = StateCache::current().drawFramebuffer();
     const bool timed = settings.timePasses;
     if (timed) glFinish();   // what the caller drew before is not ours
@@ -151,6 +152,7 @@ void CourseRenderer::render(const std::vector<CourseItem>& items, const CourseLi
         drawSun(lighting, camera, settings);
         endPass(CoursePass::Lighting, timed);
         if (settings.sky) drawSky(lightBuffer);
+        if (glow) glow(lightBuffer);
         endPass(CoursePass::Sky, timed);
     };
     StateCache::current().bindFramebuffer(output);

@@ -11,7 +11,8 @@
 //   occlusion  screen-space ambient occlusion from the G-buffer (lab 09)
 //   lighting   ambient light and the point lights in tiles (lab 08), then the
 //              sun, tested against the cascades (lab 05's shadows.glsl)
-//   sky        the skybox where nothing was drawn (lab 06's skybox.glsl)
+//   sky        the skybox where nothing was drawn (lab 06's skybox.glsl), then
+//              what glows by itself, given by the caller (lab 07's sparks)
 //   present    the lit picture (or a debug view) into the bound framebuffer
 //
 // The students' functions come in through CourseLabCode, so the framework links
@@ -161,10 +162,15 @@ public:
     CourseRenderer(const CoursePrograms& programs, CourseLabCode code);
     ~CourseRenderer();
 
+    /// What glows by itself (lab 07's sparks): drawn after the sky into the
+    /// light buffer, which is bound with a copy of the G-buffer's depth, under
+    /// the camera's frame block; the function sets its own state.
+    using GlowPass = std::function<void(const Framebuffer& lightBuffer)>;
+
     /// The whole frame at `size` pixels into the framebuffer bound when called.
-    /// `crowd` may be nullptr.
+    /// `crowd` may be nullptr; `glow` may be empty.
     void render(const std::vector<CourseItem>& items, const CourseLighting& lighting, const Camera& camera,
-                glm::ivec2 size, const CourseSettings& settings, const CourseCrowd* crowd);
+                glm::ivec2 size, const CourseSettings& settings, const CourseCrowd* crowd, const GlowPass& glow = {});
 
     const CourseStats& stats() const { return m_stats; }
     /// Each item's level in the last frame: -2 culled, -1 too small, else its level.
