@@ -467,30 +467,87 @@ private:
         for (const EditorLight& light : m_scene.lights) {
             ImGui::PushID(static_cast<int>(light.id));
             bool on = light.on;
-            if (ImGui::Checkbox(light.name.c_str(), &on)) {
+            if (ImGui::Checkbox("##on", &on)) {
                 const std::uint32_t id = light.id;
                 m_history.perform(m_scene, {std::string(on ? "switch on " : "switch off ") + light.name,
                                             [id, on](EditorScene& s) { if (EditorLight* l = s.findLight(id)) l->on = on; },
                                             [id, on](EditorScene& s) { if (EditorLight* l = s.findLight(id)) l->on = !on; }, ""});
             }
+            ImGui::SameLine();
+            if (ImGui::Selectable(light.name.c_str(), light.id == m_selected)) m_selected = light.id;   // the inspector edits it
             ImGui::PopID();
         }
+        if (const CrowdSimulation* crowd = m_pipeline && m_scene.renderer.deferred ? m_pipeline->crowd() : nullptr) {
+            ImGui::Separator();
+            if (ImGui::TreeNode("crowd", "crowd: %zu agents", crowd->agents().size())) {
+                for (std::size_t i = 0; i < crowd->agents().size(); ++i) {
+                    const CrowdAgent& agent = crowd->agents()[i];
+                    const std::string label = std::to_string(i) + ": " + crowd->world().types[static_cast<std::size_t>(agent.type)].name;
+                    if (ImGui::Selectable(label.c_str(), static_cast<int>(i) == m_selectedAgent)) {
+                        m_selectedAgent = static_cast<int>(i);
+                        m_selected = 0;
+                    }
+                }
+                ImGui::TreePop();
+            }
+        }
         ImGui::End();
+    }
+
+    static EditorObject* findThing(EditorScene& scene, std::uint32_t id, EditorObject*) { return scene.findObject(id); }
+    static EditorLight* findThing(EditorScene& scene, std::uint32_t id, EditorLight*) { return scene.findLight(id); }
+
+    /// One field of an object or a light set to `value` as an edit: successive
+    /// changes of the same field merge into one undo step until endMerge().
+    template <typename Thing, typename Value>
+    void recordEdit(const std::string& label, const Thing& thing, Value Thing::*member, const Value& value) {
+        const std::uint32_t id = thing.id;
+        const Value before = thing.*member;
+        m_history.perform(m_scene, {label + " of " + thing.name,
+                                    [id, member, value](EditorScene& s) {
+                                        if (Thing* t = findThing(s, id, static_cast<Thing*>(nullptr))) t->*member = value;
+                                    },
+                                    [id, member, before](EditorScene& s) {
+                                        if (Thing* t = findThing(s, id, static_cast<Thing*>(nullptr))) t->*member = before;
+                                    },
+                                    label + " " + std::to_string(id)});
     }
 
     /// A vec3 of the selection edited by dragging: one undo step per drag.
     void editVector(const char* label, glm::vec3 EditorObject::*member, float speed) {
         EditorObject* object = m_scene.findObject(m_selected);
         glm::vec3 value = object->*member;
-        if (ImGui::DragFloat3(label, &value.x, speed)) {
-            const std::uint32_t id = object->id;
-            const glm::vec3 before = object->*member;
-            m_history.perform(m_scene, {std::string(label) + " of " + object->name,
-                                        [id, member, value](EditorScene& s) { if (EditorObject* o = s.findObject(id)) o->*member = value; },
-                                        [id, member, before](EditorScene& s) { if (EditorObject* o = s.findObject(id)) o->*member = before; },
-                                        std::string(label) + " " + std::to_string(id)});
-        }
+        if (ImGui::DragFloat3(label, &value.x, speed)) recordEdit(label, *object, member, value);
         if (ImGui::IsItemDeactivatedAfterEdit()) m_history.endMerge();
+    }
+
+    /// The selected light's position, colour (with its intensity: components
+    /// may pass 1) and radius, each drag one undo step.
+    void drawLightInspector(const EditorLight& light) {
+        ImGui::Text("%s (id %u, point light)", light.name.c_str(), light.id);
+        glm::vec3 position = light.position;
+        if (ImGui::DragFloat3("position", &position.x, 0.02f)) recordEdit("position", light, &EditorLight::position, position);
+        if (ImGui::IsItemDeactivatedAfterEdit()) m_history.endMerge();
+        glm::vec3 color = light.color;
+        if (ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR))
+            recordEdit("colour", light, &EditorLight::color, glm::max(color, glm::vec3(0.0f)));
+        if (ImGui::IsItemDeactivatedAfterEdit()) m_history.endMerge();
+        float radius = light.radius;
+        if (ImGui::DragFloat("radius", &radius, 0.05f, 0.1f, 100.0f, "%.2f m"))
+            recordEdit("radius", light, &EditorLight::radius, std::max(radius, 0.1f));
+        if (ImGui::IsItemDeactivatedAfterEdit()) m_history.endMerge();
+    }
+
+    /// A crowd agent, read-only: lab 10's simulation decides what it does.
+    void drawAgentInspector(const CrowdSimulation& crowd, std::size_t index) {
+        const CrowdAgent& agent = crowd.agents()[index];
+        const AgentType& type = crowd.world().types[static_cast<std::size_t>(agent.type)];
+        ImGui::Text("agent %zu: %s (behaviour %s)", index, type.name.c_str(), type.behaviour.c_str());
+        ImGui::Text("state %s, animation %s%s", crowd.stateName(index).c_str(), agent.animation.c_str(),
+                    agent.alive ? "" : ", waiting to respawn");
+        ImGui::Text("at (%.2f, %.2f, %.2f), heading %.0f degrees", agent.position.x, agent.y, agent.position.y,
+                    glm::degrees(agent.heading));
+        ImGui::Text("speed %.2f m/s, sight %.1f m", type.speed, type.sightRadius);
     }
 
     void drawInspectorPanel() {
@@ -498,7 +555,12 @@ private:
         ImGui::SetNextWindowSize(ImVec2(330.0f, 150.0f), ImGuiCond_FirstUseEver);
         ImGui::Begin("Inspector");
         EditorObject* object = m_scene.findObject(m_selected);
-        if (!object) {
+        const CrowdSimulation* crowd = m_pipeline && m_scene.renderer.deferred ? m_pipeline->crowd() : nullptr;
+        if (const EditorLight* light = m_scene.findLight(m_selected)) {
+            drawLightInspector(*light);
+        } else if (!object && crowd && m_selectedAgent >= 0 && m_selectedAgent < static_cast<int>(crowd->agents().size())) {
+            drawAgentInspector(*crowd, static_cast<std::size_t>(m_selectedAgent));
+        } else if (!object) {
             ImGui::TextDisabled("nothing selected: click an object");
         } else {
             ImGui::Text("%s (id %u, %s)", object->name.c_str(), object->id, object->mesh.c_str());
@@ -729,6 +791,7 @@ private:
         if (m_assets) m_assets->setSceneFolder(m_sceneFile.empty() ? paths::assetsDir() : m_sceneFile.parent_path());
         m_history = EditHistory();
         m_selected = 0;
+        m_selectedAgent = -1;
         m_dragAxis = -1;
         m_pendingClick.reset();
         m_fileVersions = {{"diffuse", 0}, {"stripes", 0}};
@@ -1046,6 +1109,7 @@ private:
             settings.sky = renderer.sky;
             if (!courseViewFromName(renderer.debugView, settings.view)) settings.view = CourseView::Final;
             settings.timePasses = timePasses;
+            m_pipeline->selectAgent(m_selected == 0 ? m_selectedAgent : -1);
             m_pipeline->render(m_scene, std::move(items), pointLights(), &m_drawMaterials.back(), fieldDiffuse,
                                m_cameras.active(), m_size, settings);
         } catch (const NotImplemented& missing) {
@@ -1263,6 +1327,7 @@ private:
     std::vector<Material> m_drawMaterials;                           // the deferred items'
     std::map<std::string, std::unique_ptr<Texture2D>> m_heightNormalMaps;   // normal maps made from height maps
     bool m_tangentsMissing = false;                                  // lab 04's computeTangents() is a stub
+    int m_selectedAgent = -1;                                        // the crowd's agent the inspector shows
 };
 
 } // namespace stoa

@@ -111,6 +111,7 @@ public:
             crowd.simulation = m_crowd.get();
             crowd.renderer = m_crowdRenderer.get();
             crowd.options.markers = false;
+            crowd.options.selected = m_selectedAgent;   // drawn highlighted
         }
         if (m_ballFlying) {
             CourseItem ball;
@@ -159,6 +160,8 @@ public:
     }
 
     const CourseStats& stats() const { return m_renderer->stats(); }
+    /// The crowd's agent drawn highlighted (-1: none).
+    void selectAgent(int agent) { m_selectedAgent = agent; }
     const CrowdSimulation* crowd() const { return m_crowd.get(); }
     /// Where agents set a foot down since the last call (for the footsteps' sound).
     std::vector<glm::vec3> takeFootsteps() {
@@ -393,6 +396,7 @@ private:
     std::vector<std::pair<glm::vec2, float>> m_walked;   // per agent: last position, distance since its last footstep
     std::vector<glm::vec3> m_footsteps;
     double m_crowdDebt = 0.0;
+    int m_selectedAgent = -1;
     double m_seconds = 0.0;
     // Lab 07's ball and sparks.
     std::map<std::string, std::vector<Mesh>> m_cpuMeshes;

@@ -3,8 +3,11 @@
 // that uses them links without that code. This program links the framework
 // and lab 01's student code alone (the matrices every renderer needs) and
 // takes the address of the ShadowRenderer's and ForwardRenderer's entry points:
-// if either named one of lab 05's functions, it would not link.
+// if either named one of lab 05's functions, it would not link. It covers the
+// course pipeline's renderer too: CourseRenderer takes labs 04-10's code
+// through CourseLabCode, so naming any of it directly would fail the link here.
 
+#include <stoa/render/CourseRenderer.hpp>
 #include <stoa/render/ForwardRenderer.hpp>
 #include <stoa/render/ShadowRenderer.hpp>
 
@@ -13,7 +16,9 @@
 int main() {
     const auto shadow = &stoa::ShadowRenderer::render;
     const auto forward = &stoa::ForwardRenderer::render;
-    std::printf("linked without lab 05: ShadowRenderer::render %s, ForwardRenderer::render %s\n",
-                shadow ? "present" : "missing", forward ? "present" : "missing");
-    return shadow && forward ? 0 : 1;
+    const auto course = &stoa::CourseRenderer::render;
+    std::printf("linked without lab 05: ShadowRenderer::render %s, ForwardRenderer::render %s, "
+                "CourseRenderer::render %s\n",
+                shadow ? "present" : "missing", forward ? "present" : "missing", course ? "present" : "missing");
+    return shadow && forward && course ? 0 : 1;
 }

@@ -115,7 +115,8 @@ struct DeferredSettings {
     /// Skip the geometry pass: renderGeometry() has just filled the G-buffer
     /// for the same items, camera and size (lab 09 reads it before lighting).
     bool reuseGBuffer = false;
-    /// The final picture only: called once the point lights are in the light
+    /// The final picture in the volumes and tiled modes only (not Forward,
+    /// which has no light buffer): called once the point lights are in the light
     /// buffer (HDR, with a copy of the G-buffer's depth and stencil), which is
     /// bound, before it is presented: a caller's own light and sky passes
     /// (stoa/render/CourseRenderer.hpp: the shadowed sun, the skybox).
