@@ -404,8 +404,18 @@ private:
 
 #ifdef STOA_EDITOR_APP_IMGUI
     /// The scene's renderer settings (an edit each) and what the last frame drew.
+    /// A panel of its own between the Stoa panel and the asset browser, open at
+    /// the start where the scene asks for the deferred pipeline (the showcase).
     void drawRendererControls() {
-        if (!ImGui::CollapsingHeader("Renderer")) return;
+        ImGui::SetNextWindowPos(ImVec2(370.0f, 10.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(355.0f, 0.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowCollapsed(!m_scene.renderer.deferred, ImGuiCond_FirstUseEver);
+        const bool open = ImGui::Begin("Renderer");
+        if (open) drawRendererSettings();
+        ImGui::End();
+    }
+
+    void drawRendererSettings() {
         EditorRendererSettings settings = m_scene.renderer;
         int pipeline = settings.deferred ? 1 : 0;
         bool changed = ImGui::RadioButton("forward (lab 11)", &pipeline, 0);
@@ -427,10 +437,9 @@ private:
             }
             changed |= ImGui::Checkbox("normal maps (lab 04)", &settings.normalMaps);
             ImGui::SameLine();
-            changed |= ImGui::Checkbox("culling and LOD (lab 06)", &settings.culling);
-            changed |= ImGui::Checkbox("ambient occlusion (lab 09)", &settings.ssao);
-            ImGui::SameLine();
             changed |= ImGui::Checkbox("sky (lab 06)", &settings.sky);
+            changed |= ImGui::Checkbox("ambient occlusion (lab 09)", &settings.ssao);
+            changed |= ImGui::Checkbox("culling and levels of detail (lab 06)", &settings.culling);
             if (ImGui::BeginCombo("view", settings.debugView.c_str())) {
                 for (const std::string& view : courseViewNames())
                     if (ImGui::Selectable(view.c_str(), settings.debugView == view)) {
@@ -441,10 +450,11 @@ private:
             }
             if (m_pipeline) {
                 const CourseStats& stats = m_pipeline->stats();
-                ImGui::Text("%d objects: %d culled, %d too small; by level %d / %d / %d / %d", stats.objects, stats.culled,
-                            stats.tooSmall, stats.perLevel[0], stats.perLevel[1], stats.perLevel[2], stats.perLevel[3]);
-                ImGui::Text("%d point lights (%ld in tile lists), %d agents; %.1f ms", stats.pointLights,
-                            stats.tileListEntries, stats.agents, 1e3 * stats.totalSeconds);
+                ImGui::Text("%d objects: %d culled, %d too small", stats.objects, stats.culled, stats.tooSmall);
+                ImGui::Text("drawn by level of detail: %d / %d / %d / %d", stats.perLevel[0], stats.perLevel[1],
+                            stats.perLevel[2], stats.perLevel[3]);
+                ImGui::Text("%d point lights, %ld in tile lists", stats.pointLights, stats.tileListEntries);
+                ImGui::Text("%d agents; the pipeline took %.1f ms", stats.agents, 1e3 * stats.totalSeconds);
             }
         }
         if (!changed) return;

@@ -280,6 +280,7 @@ private:
                 if (name == "shape:cube") mesh = shapes::cube(1.0f);
                 else if (name == "shape:sphere") mesh = shapes::sphere(0.5f, 32, 16);
                 else if (name == "shape:cylinder") mesh = shapes::cylinder(0.5f, 1.0f, 32);
+                else if (name == "shape:plane") mesh = shapes::plane(1.0f, 1);
                 else {
                     const std::filesystem::path path = resolve(name, folder, paths::assetsDir());
                     if (path.empty()) throw InputError(name, 0, "no such file next to the scene file or in assets/");
@@ -343,8 +344,10 @@ private:
         m_walked.clear();
         if (name.empty()) return;
         try {
-            const std::filesystem::path path = resolve(name, folder, paths::assetsDir() / "crowds");
-            if (path.empty()) throw InputError(name, 0, "no such world file next to the scene file or in assets/crowds/");
+            // Next to the scene file, in assets/crowds/, or as an asset name ("crowds/explorers.xml").
+            std::filesystem::path path = resolve(name, folder, paths::assetsDir() / "crowds");
+            if (path.empty()) path = resolve(name, folder, paths::assetsDir());
+            if (path.empty()) throw InputError(name, 0, "no such world file next to the scene file, in assets/crowds/ or in assets/");
             const CrowdWorld world = loadCrowdWorld(path);
             m_crowd = std::make_unique<CrowdSimulation>(world, loadGroundMaps(world.ground, world.file),
                                                         CrowdLabCode::fromLab10());

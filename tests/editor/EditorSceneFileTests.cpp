@@ -614,9 +614,16 @@ TEST_CASE("The field and the light swarm of version 2 are checked", "[editor][sc
     const std::string count = replaced(v2, "\"count\": 10", "\"count\": 5000");
     checkRefused(count, lineOf(count, "5000"), "light_swarm.count: expected a whole number from 0 to 4096");
     const std::string height = replaced(v2, "\"height\": 2", "\"height\": 0.1");
-    checkRefused(height, lineOf(height, "0.1"), "light_swarm.height: must be 0.3 or more");
+    checkRefused(height, lineOf(height, "\"height\": 0.1"), "light_swarm.height: must be 0.3 or more");
     const std::string pcf = replaced(v2, "\"pcf\": 3", "\"pcf\": 5");
     checkRefused(pcf, lineOf(pcf, "\"pcf\": 5"), "renderer.pcf: expected a whole number from 1 to 3 (lab 05's shadow filter");
+    const std::string shape = replaced(v2, "[\"shape:cube\"]", "[\"shape:cone\"]");
+    checkRefused(shape, lineOf(shape, "shape:cone"), "field.meshes[0]: unknown shape \"shape:cone\"");
+    // Version 2's keys in a file that says version 1.
+    const std::string old = replaced(v2, "\"stoa_scene\": 2", "\"stoa_scene\": 1");
+    checkRefused(old, lineOf(old, "\"field\""), "field: new in version 2 of the format, but the file says \"stoa_scene\": 1");
+    const std::string oldSky = replaced(kScene, "\"ssao\": false,", "\"ssao\": false,\n    \"sky\": false,");
+    checkRefused(oldSky, lineOf(oldSky, "\"sky\""), "renderer.sky: new in version 2 of the format");
     const std::string key = replaced(v2, "\"seed\": 2", "\"speed\": 2");
     checkRefused(key, lineOf(key, "\"speed\""), "unknown key \"speed\" in light_swarm; the keys allowed there are: count, radius, height, brightness, seed");
 }

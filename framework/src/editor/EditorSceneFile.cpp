@@ -73,6 +73,8 @@ public:
                 scene.materials.push_back(readMaterial(item, where, scene));
             });
         }
+        newInVersion2(root, "field", "field");
+        newInVersion2(root, "light_swarm", "light_swarm");
         if (const Value* value = find(root, "field")) readField(*value, scene.field);
         if (const Value* value = find(root, "light_swarm")) readLightSwarm(*value, scene.lightSwarm);
         if (const Value* value = find(root, "objects")) {
@@ -217,6 +219,26 @@ private:
         return id;
     }
 
+    /// A mesh name starting with "shape:" must name one of the shapes.
+    void checkShape(const std::string& mesh, int line, const std::string& where) const {
+        if (mesh.compare(0, 6, "shape:") != 0) return;
+        bool known = false;
+        for (const char* shape : kShapes) known = known || mesh == shape;
+        if (!known) {
+            fail(line, where + ": unknown shape \"" + quoteInput(mesh) +
+                           "\"; the shapes are shape:cube, shape:sphere, shape:cylinder, shape:plane");
+        }
+    }
+
+    /// A key version 1 did not have, in a file that says it is version 1.
+    void newInVersion2(const Value& object, const char* key, const std::string& where) const {
+        if (m_version >= 2) return;
+        for (const Member& member : object.members)
+            if (member.key == key)
+                fail(member.value.line, where + ": new in version 2 of the format, but the file says \"stoa_scene\": 1 "
+                                              "(write 2, or leave the key out)");
+    }
+
     int wholeInRange(const Value& value, const std::string& where, long long low, long long high, const char* meaning) const {
         if (value.kind != Value::Kind::Number || !value.whole || !value.fitsInteger || value.integer < low ||
             value.integer > high) {
@@ -234,7 +256,9 @@ private:
             for (std::size_t i = 0; i < meshes->items.size(); ++i) {
                 const std::string where = "field.meshes[" + std::to_string(i) + "]";
                 field.meshes.push_back(string(meshes->items[i], where));
-                if (field.meshes.back().empty()) fail(meshes->items[i].line, where + ": must not be empty");
+                const std::string& mesh = field.meshes.back();
+                if (mesh.empty()) fail(meshes->items[i].line, where + ": must not be empty");
+                checkShape(mesh, meshes->items[i].line, where);
             }
         }
         if (const Value* material = find(value, "material")) {
@@ -305,6 +329,8 @@ private:
         }
         if (const Value* on = find(value, "normal_maps")) renderer.normalMaps = boolean(*on, "renderer.normal_maps");
         if (const Value* on = find(value, "ssao")) renderer.ssao = boolean(*on, "renderer.ssao");
+        newInVersion2(value, "sky", "renderer.sky");
+        newInVersion2(value, "culling", "renderer.culling");
         if (const Value* on = find(value, "sky")) renderer.sky = boolean(*on, "renderer.sky");
         if (const Value* on = find(value, "culling")) renderer.culling = boolean(*on, "renderer.culling");
         if (const Value* view = find(value, "debug_view")) {
@@ -346,14 +372,7 @@ private:
         if (!mesh) fail(value.line, where + ": no \"mesh\" (\"shape:cube\", \"shape:sphere\", \"shape:cylinder\", \"shape:plane\" or an OBJ asset)");
         result.mesh = string(*mesh, where + ".mesh");
         if (result.mesh.empty()) fail(mesh->line, where + ".mesh: must not be empty");
-        if (result.mesh.compare(0, 6, "shape:") == 0) {
-            bool known = false;
-            for (const char* shape : kShapes) known = known || result.mesh == shape;
-            if (!known) {
-                fail(mesh->line, where + ".mesh: unknown shape \"" + quoteInput(result.mesh) +
-                                     "\"; the shapes are shape:cube, shape:sphere, shape:cylinder, shape:plane");
-            }
-        }
+        checkShape(result.mesh, mesh->line, where + ".mesh");
         const Value* material = find(value, "material");
         if (!material) fail(value.line, where + ": no \"material\" (the name of one of the scene's materials)");
         result.material = string(*material, where + ".material");
