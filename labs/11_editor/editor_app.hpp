@@ -161,7 +161,7 @@ public:
                 computeTangents(mesh);
             } catch (const NotImplemented& missing) {
                 m_tangentsMissing = true;
-                log(std::string("normal maps off: ") + missing.what());
+                log("normal maps off: " + missing.function() + " (" + missing.lab() + ") is still a stub in this build");
             }
         });
     }
@@ -248,7 +248,7 @@ public:
                                       camera.eyePosition(), camera.lookTarget() - camera.eyePosition());
                 log("ball thrown");
             } catch (const NotImplemented& missing) {
-                log(std::string("the ball needs ") + missing.what());
+                log("the ball needs " + missing.function() + " (" + missing.lab() + "), still a stub in this build");
             }
             return true;
         }
@@ -453,8 +453,8 @@ private:
                 ImGui::Text("%d objects: %d culled, %d too small", stats.objects, stats.culled, stats.tooSmall);
                 ImGui::Text("drawn by level of detail: %d / %d / %d / %d", stats.perLevel[0], stats.perLevel[1],
                             stats.perLevel[2], stats.perLevel[3]);
-                ImGui::Text("%d point lights, %ld in tile lists", stats.pointLights, stats.tileListEntries);
-                ImGui::Text("%d agents; the pipeline took %.1f ms", stats.agents, 1e3 * stats.totalSeconds);
+                ImGui::Text("%d lights (%ld in tiles), %d agents, %.0f ms", stats.pointLights, stats.tileListEntries,
+                            stats.agents, 1e3 * stats.totalSeconds);
             }
         }
         if (!changed) return;
@@ -1123,7 +1123,8 @@ private:
             m_pipeline->render(m_scene, std::move(items), pointLights(), &m_drawMaterials.back(), fieldDiffuse,
                                m_cameras.active(), m_size, settings);
         } catch (const NotImplemented& missing) {
-            log(std::string("the deferred pipeline needs ") + missing.what() + "; drawing forward");
+            log("the deferred pipeline needs " + missing.function() + " (" + missing.lab() +
+                "), still a stub in this build: drawing forward");
             m_scene.renderer.deferred = false;
             StateCache::current().bindFramebuffer(output);
             drawShaded();
@@ -1154,7 +1155,7 @@ private:
             log(std::string("cannot use the normal map ") + name + ": " + bad.what());
         } catch (const NotImplemented& missing) {
             m_tangentsMissing = true;
-            log(std::string("normal maps off: ") + missing.what());
+            log("normal maps off: " + missing.function() + " (" + missing.lab() + ") is still a stub in this build");
         }
         return texture.get();
     }
