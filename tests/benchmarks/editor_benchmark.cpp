@@ -14,8 +14,10 @@
 //     stencil pick's limit): the shaded pass, the selection's outline and gizmo;
 //   - the same frame after a click: the stencil pick pass, its read-back and
 //     objectAtPixel() on top (the difference is the pick's cost);
-//   - the same scene drawn deferred (lab 08, tiled lights) and deferred with
-//     ambient occlusion (lab 09, 32 samples).
+//   - the same scene drawn by the deferred pipeline (stoa/render/CourseRenderer.hpp:
+//     culling, three shadow cascades, the G-buffer, tiled lights, the sun, the
+//     sky), without and with ambient occlusion (lab 09, 32 samples).
+// The showcase's frame, pass by pass, is showcase_benchmark's.
 
 #include "BenchmarkTiming.hpp"
 
@@ -177,7 +179,7 @@ void frameFigures(int runs) {
     std::printf("  a frame (scene file loaded, drawn forward): %.1f ms\n", plain);
     std::printf("  a frame with a click (pick pass, read-back, objectAtPixel): %.1f ms, the pick %.1f ms of it\n", clicked,
                 clicked - plain);
-    std::printf("  deferred (lab 08, tiled lights): %.1f ms; with ambient occlusion (lab 09): %.1f ms\n", median(times[2]),
+    std::printf("  the deferred pipeline (cascaded shadows, tiled lights, sky): %.1f ms; with ambient occlusion: %.1f ms\n", median(times[2]),
                 median(times[3]));
     std::filesystem::remove_all(folder);
 }
