@@ -1083,7 +1083,7 @@ private:
             m_pipeline = std::make_unique<EditorPipeline>(m_searchPath, [this](const std::string& line) { log(line); });
         const GLuint output = StateCache::current().drawFramebuffer();
         try {
-            m_pipeline->prepare(m_scene, m_sceneFile.empty() ? paths::assetsDir() : m_sceneFile.parent_path());
+            m_pipeline->prepare(m_scene, m_sceneFile.empty() ? paths::assetsDir() : m_sceneFile.parent_path(), *m_assets);
             // The objects, with materials and maps that live as long as the frame.
             m_drawMaterials.assign(m_scene.objects.size() + 1, Material());
             std::vector<CourseItem> items;

@@ -18,6 +18,7 @@
 #include <stoa/crowd/CrowdSimulation.hpp>
 #include <stoa/crowd/CrowdXml.hpp>
 #include <stoa/crowd/GroundMaps.hpp>
+#include <stoa/editor/EditorAssets.hpp>
 #include <stoa/editor/EditorScene.hpp>
 #include <stoa/geometry/LevelOfDetail.hpp>
 #include <stoa/geometry/ObjLoader.hpp>
@@ -59,10 +60,18 @@ public:
     /// Builds what `scene` needs that differs from the last scene's: the field's
     /// meshes and levels, the crowd. `folder`: the scene file's folder (assets
     /// are looked for there first, then in assets/). Bad assets go to the log.
-    void prepare(const EditorScene& scene, const std::filesystem::path& folder) {
+    void prepare(const EditorScene& scene, const std::filesystem::path& folder, EditorAssets& assets) {
         if (!m_renderer) makeRenderer();
         if (scene.field.meshes != m_fieldMeshNames) buildFieldMeshes(scene.field.meshes, folder);
-        if (scene.crowdWorld != m_crowdName) loadCrowd(scene.crowdWorld, folder);
+        // The crowd's world is an asset: a new version (its XML or a ground map saved) starts the crowd again.
+        const AssetRef<CrowdWorld>* world = assets.crowdWorld(scene.crowdWorld);
+        const int version = world ? world->version() : 0;
+        if (scene.crowdWorld != m_crowdName || version != m_crowdVersion) {
+            if (scene.crowdWorld == m_crowdName && m_crowdVersion != 0)
+                m_log("crowd: " + scene.crowdWorld + " changed, the crowd starts again");
+            loadCrowd(scene.crowdWorld, world);
+            m_crowdVersion = version;
+        }
     }
 
     /// Moves the crowd and the wandering lights on by `seconds` of wall time.
@@ -337,25 +346,23 @@ private:
         }
     }
 
-    void loadCrowd(const std::string& name, const std::filesystem::path& folder) {
+    void loadCrowd(const std::string& name, const AssetRef<CrowdWorld>* world) {
         m_crowdName = name;
         m_crowdRenderer.reset();
         m_crowd.reset();
         m_walked.clear();
-        if (name.empty()) return;
+        if (!world) return;   // none, or it did not load (EditorAssets logged why)
         try {
-            // Next to the scene file, in assets/crowds/, or as an asset name ("crowds/explorers.xml").
-            std::filesystem::path path = resolve(name, folder, paths::assetsDir() / "crowds");
-            if (path.empty()) path = resolve(name, folder, paths::assetsDir());
-            if (path.empty()) throw InputError(name, 0, "no such world file next to the scene file, in assets/crowds/ or in assets/");
-            const CrowdWorld world = loadCrowdWorld(path);
-            m_crowd = std::make_unique<CrowdSimulation>(world, loadGroundMaps(world.ground, world.file),
+            const std::shared_ptr<const CrowdWorld> held = world->current();   // this version, however the file changes
+            const CrowdWorld& loaded = *held;
+            m_crowd = std::make_unique<CrowdSimulation>(loaded, loadGroundMaps(loaded.ground, loaded.file),
                                                         CrowdLabCode::fromLab10());
-            m_crowd->advance(static_cast<int>(std::lround(3.0 / world.step)));   // three seconds: the agents on their way
+            m_crowd->advance(static_cast<int>(std::lround(3.0 / loaded.step)));   // three seconds: the agents on their way
             m_crowdRenderer = std::make_unique<CrowdRenderer>(m_crowdPrograms, *m_crowd);
             m_walked.assign(m_crowd->agents().size(), {glm::vec2(0.0f), 0.0f});
             for (std::size_t i = 0; i < m_walked.size(); ++i) m_walked[i].first = m_crowd->agents()[i].position;
         } catch (const InputError& error) {
+            m_crowdRenderer.reset();
             m_crowd.reset();
             m_log(std::string("crowd: ") + error.what());
         }
@@ -394,6 +401,7 @@ private:
     EditorField m_placedFor;
     std::vector<Placement> m_placements;
     std::string m_crowdName;
+    int m_crowdVersion = 0;     // of the world asset the crowd was made from
     std::unique_ptr<CrowdSimulation> m_crowd;
     std::unique_ptr<CrowdRenderer> m_crowdRenderer;
     std::vector<std::pair<glm::vec2, float>> m_walked;   // per agent: last position, distance since its last footstep

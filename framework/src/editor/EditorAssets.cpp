@@ -22,6 +22,7 @@ EditorAssets::EditorAssets()
 
 void EditorAssets::addLoaders(AssetCache& cache) const {
     addGlAssetLoaders(cache, {paths::shadersDir()}, m_meshFilter);
+    addDataAssetLoaders(cache);
 }
 
 void EditorAssets::makeShapes() {
@@ -120,6 +121,24 @@ std::vector<const GpuMesh*> EditorAssets::meshes(const std::string& name) {
     std::vector<const GpuMesh*> meshes;
     for (const GpuModelPart& part : model->second->parts) meshes.push_back(part.mesh.get());
     return meshes;
+}
+
+const AssetRef<CrowdWorld>* EditorAssets::crowdWorld(const std::string& name) {
+    if (name.empty()) return nullptr;
+    auto world = m_worlds.find(name);
+    if (world == m_worlds.end()) {
+        if (m_failed.count(name)) return nullptr;
+        std::error_code error;
+        const bool inCrowds = !fs::exists(m_assets->root() / name, error) && fs::exists(m_assets->root() / "crowds" / name, error);
+        const std::string cached = inCrowds && !(m_scene && fs::exists(m_scene->root() / name, error)) ? "crowds/" + name : name;
+        try {
+            world = m_worlds.emplace(name, cacheFor(cached).get<CrowdWorld>(cached)).first;
+        } catch (const InputError& bad) {
+            failedOnce(name, std::string("cannot load the crowd world ") + name + ": " + bad.what());
+            return nullptr;
+        }
+    }
+    return &world->second;
 }
 
 const Texture2D* EditorAssets::texture(const std::string& name) {

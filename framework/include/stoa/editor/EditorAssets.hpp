@@ -14,6 +14,7 @@
 //   for (const GpuMesh* mesh : assets.meshes(object.mesh)) mesh->draw();
 
 #include <stoa/assets/AssetCache.hpp>
+#include <stoa/assets/DataAssets.hpp>
 #include <stoa/assets/GlAssets.hpp>
 #include <stoa/editor/LiveShader.hpp>
 
@@ -55,6 +56,11 @@ public:
     std::vector<const GpuMesh*> meshes(const std::string& name);
     /// The texture `name`; nullptr for "" or when it does not load (logged once).
     const Texture2D* texture(const std::string& name);
+    /// A crowd world (lab 10's XML) by name: next to the scene file, under
+    /// assets/, or under assets/crowds/ ("mars_explorers.xml"); a new version
+    /// when the world file, a file it includes or a ground map changes. nullptr
+    /// for "" or when it does not load (logged once).
+    const AssetRef<CrowdWorld>* crowdWorld(const std::string& name);
     /// The program `name` ("editor/lit": editor/lit.vert + editor/lit.frag in
     /// shaders/); "" and names that do not load: editor/lit. Its uniform block
     /// Frame is bound to FrameUniforms::kBinding.
@@ -83,6 +89,7 @@ private:
     std::unique_ptr<AssetCache> m_scene;     // the scene file's folder (none until set)
     std::unique_ptr<AssetCache> m_shaders;   // shaders/
     std::map<std::string, AssetRef<GpuModel>> m_models;
+    std::map<std::string, AssetRef<CrowdWorld>> m_worlds;
     std::map<std::string, AssetRef<Texture2D>> m_textures;
     std::map<std::string, AssetRef<Program>> m_programs;
     std::map<std::string, std::pair<GLuint, int>> m_boundBlocks;   // program name -> the id/generation bound
