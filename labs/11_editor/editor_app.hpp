@@ -237,6 +237,29 @@ public:
             return true;
         }
         case 'x': deleteSelection(); return true;
+        case ',':
+        case '.': {   // turn the selection 15 degrees about +Y, one edit each press
+            const EditorObject* object = m_scene.findObject(m_selected);
+            if (!object) return false;
+            glm::vec3 rotation = object->rotationDegrees;
+            rotation.y = std::fmod(rotation.y + (key == '.' ? 15.0f : -15.0f), 360.0f);
+            recordEdit("rotation", *object, &EditorObject::rotationDegrees, rotation);
+            m_history.endMerge();
+            log(object->name + ": turned to " + std::to_string(static_cast<int>(std::lround(rotation.y))) + " degrees about y");
+            return true;
+        }
+        case '-':
+        case '=': {   // scale the selection by 1/1.1 or 1.1, one edit each press
+            const EditorObject* object = m_scene.findObject(m_selected);
+            if (!object) return false;
+            const glm::vec3 scale = object->scale * (key == '=' ? 1.1f : 1.0f / 1.1f);
+            recordEdit("scale", *object, &EditorObject::scale, scale);
+            m_history.endMerge();
+            char line[128];
+            std::snprintf(line, sizeof line, "%s: scaled to (%.3f, %.3f, %.3f)", object->name.c_str(), scale.x, scale.y, scale.z);
+            log(line);
+            return true;
+        }
         case 'b': {   // lab 07's ball, thrown from the eye along the view (deferred pipeline)
             if (!m_scene.renderer.deferred || !m_pipeline) {
                 log("the ball (b) bounces in the deferred pipeline: switch it on in the renderer panel");
@@ -356,6 +379,8 @@ public:
                 "drag arrow   move the selection along the gizmo's x, y or z arrow",
                 "u / r        undo / redo",
                 "m / x        next material for the selection / delete it",
+                ", / .        turn the selection 15 degrees about y (one edit each)",
+                "- / =        scale the selection by 1/1.1 / 1.1 (one edit each)",
                 "b            throw a ball (deferred pipeline: lab 07's BVH bounce, sparks)",
                 "v            switch view: shaded / the stencil pick pass",
                 "Ctrl+S       save the scene file (stoa-editor)"};

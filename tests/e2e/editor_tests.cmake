@@ -9,6 +9,7 @@
 #   editor_bad_scene_named            broken scene files and command lines (no window)
 #   editor_showcase.BACKEND           the showcase headless: sky, lights, shadows; on the
 #                                     last backend every debug view too (no window)
+#   editor_keys_turn_scale            `.` and `=` turn and scale the selection, one edit each; undone
 #   editor_crowd_reload               the crowd's world file saved anew starts the crowd again; a
 #                                     broken save keeps it, the error at its line
 #   window_showcase                   stoa-editor --scene showcase in a window: a frame, and
@@ -28,10 +29,13 @@ if(TARGET stoa-editor)
                      ${work}/editor-shader-error)
     add_test(NAME e2e.window_showcase
              COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/window_showcase.sh $<TARGET_FILE:stoa-editor> ${work}/window-showcase)
+    add_test(NAME e2e.editor_keys_turn_scale
+             COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/editor_keys_turn_scale.sh $<TARGET_FILE:stoa-editor> ${work}/editor-keys-turn-scale)
     add_test(NAME e2e.editor_crowd_reload
              COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/editor_crowd_reload.sh $<TARGET_FILE:stoa-editor> ${work}/editor-crowd-reload)
     list(APPEND editor_window_tests e2e.editor_edit_save_reload e2e.editor_texture_reload
-                e2e.editor_shader_error_keeps_drawing e2e.window_showcase e2e.editor_crowd_reload)
+                e2e.editor_shader_error_keeps_drawing e2e.window_showcase e2e.editor_crowd_reload
+                e2e.editor_keys_turn_scale)
     set_tests_properties(${editor_window_tests} PROPERTIES RESOURCE_LOCK xvfb)
     # Headless: the scene file's renderer settings drawn (forward, deferred, occlusion, normals).
     add_test(NAME e2e.editor_renderer_settings
