@@ -119,7 +119,7 @@ public:
         if (m_crowd) {
             crowd.simulation = m_crowd.get();
             crowd.renderer = m_crowdRenderer.get();
-            crowd.options.markers = false;
+            crowd.options.markers = true;   // the samples the explorers look for, their crumbs, the base
             crowd.options.selected = m_selectedAgent;   // drawn highlighted
         }
         if (m_ballFlying) {

@@ -11,6 +11,7 @@
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/Texture2D.hpp>
 #include <stoa/scene/MeshObject.hpp>
+#include <stoa/scene/Scene.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -55,8 +56,8 @@ const char* toString(CoursePass pass) {
 }
 
 const std::vector<std::string>& courseViewNames() {
-    static const std::vector<std::string> names = {"final",    "albedo",    "normals",  "positions", "specular",
-                                                   "tiles",    "occlusion", "cascades", "lod"};
+    static const std::vector<std::string> names = {"final", "albedo",    "normals",  "positions", "specular",
+                                                   "tiles", "occlusion", "cascades", "lod",       "trails"};
     return names;
 }
 
@@ -152,6 +153,8 @@ void CourseRenderer::render(const std::vector<CourseItem>& items, const CourseLi
         drawSun(lighting, camera, settings);
         endPass(CoursePass::Lighting, timed);
         if (settings.sky) drawSky(lightBuffer);
+        if (crowd && crowd->simulation && crowd->renderer && crowd->options.markers)
+            drawMarkers(lightBuffer, lighting, camera, settings, *crowd);
         if (glow) glow(lightBuffer);
         endPass(CoursePass::Sky, timed);
     };
@@ -331,6 +334,27 @@ void CourseRenderer::drawSun(const CourseLighting& lighting, const Camera& camer
     program.set("uPcfMode", static_cast<int>(settings.pcf));
     program.set("uCascadeColors", cascadeView);
     m_overlay.draw(program, {0, 0, size.x, size.y}, state);   // into the light buffer, bound by the caller
+}
+
+void CourseRenderer::drawMarkers(const Framebuffer& target, const CourseLighting& lighting, const Camera& camera,
+                                 const CourseSettings& settings, const CourseCrowd& crowd) {
+    const glm::ivec2 size = m_deferred->gBuffer().size();
+    const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+    Scene lights;
+    lights.ambient = lighting.ambient;
+    lights.directionalLights = {DirectionalLight{lighting.sunDirection, lighting.sunColor}};
+    m_markerFrame.update(camera, aspect, lights);
+    m_markerFrame.bind();
+    RenderState state;
+    state.cull = CullMode::None;
+    beginPass(passInto(target, state));   // depth-tested against the G-buffer's copy
+    CrowdView view;
+    view.view = camera.viewMatrix();
+    view.projection = camera.projectionMatrix(aspect);
+    view.eye = camera.eyePosition();
+    CrowdDrawOptions options = crowd.options;
+    options.trails = options.trails || settings.view == CourseView::Trails;
+    crowd.renderer->drawMarkersWith(*crowd.simulation, view, options);
 }
 
 void CourseRenderer::drawSky(const Framebuffer& target) {

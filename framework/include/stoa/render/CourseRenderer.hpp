@@ -71,10 +71,11 @@ enum class CourseView {
     Albedo, Normals, Positions, Specular, LightTiles,   // lab 08's G-buffer and tiles
     AmbientOcclusion,                                   // lab 09's blurred occlusion
     Cascades,                                           // lab 05: each cascade tinted
-    LevelsOfDetail                                      // lab 06: each object tinted by its level
+    LevelsOfDetail,                                     // lab 06: each object tinted by its level
+    Trails                                              // lab 10: the final picture with each agent's trail
 };
 /// The names the scene file and the renderer panel use: "final", "albedo",
-/// "normals", "positions", "specular", "tiles", "occlusion", "cascades", "lod".
+/// "normals", "positions", "specular", "tiles", "occlusion", "cascades", "lod", "trails".
 const char* toString(CourseView view);
 /// The view called `name`; false when there is none.
 bool courseViewFromName(const std::string& name, CourseView& view);
@@ -107,8 +108,9 @@ struct CourseLighting {
     glm::vec3 sceneMax{100.0f, 10.0f, 100.0f};
 };
 
-/// A crowd drawn into the G-buffer and the shadow maps (its agents only: the
-/// ground it walks is the caller's items).
+/// A crowd: its agents drawn into the G-buffer and the shadow maps, its world's
+/// markers (samples, crumbs, bases) lit by the sun and the ambient light after
+/// the sky, when options.markers (the ground it walks is the caller's items).
 struct CourseCrowd {
     const CrowdSimulation* simulation = nullptr;
     CrowdRenderer* renderer = nullptr;
@@ -184,6 +186,8 @@ private:
                         const CourseSettings& settings, const CourseCrowd* crowd);
     void drawSun(const CourseLighting& lighting, const Camera& camera, const CourseSettings& settings);
     void drawSky(const Framebuffer& target);
+    void drawMarkers(const Framebuffer& target, const CourseLighting& lighting, const Camera& camera,
+                     const CourseSettings& settings, const CourseCrowd& crowd);
     void endPass(CoursePass pass, bool timed);
 
     CoursePrograms m_programs;
@@ -195,6 +199,7 @@ private:
     std::vector<float> m_splits;
     int m_cascadeCount = 0;
     FrameUniforms m_lightFrame;      // a cascade's matrix as the projection, for the agents' depth pass
+    FrameUniforms m_markerFrame;     // the camera, the ambient light and the sun, for the crowd's markers
     CubeMap m_sky;
     GpuMesh m_skyCube;
     TextureOverlay m_overlay;

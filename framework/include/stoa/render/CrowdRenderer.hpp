@@ -109,6 +109,13 @@ public:
     /// stage of the caller's: the course pipeline's G-buffer and shadow passes)
     /// into the framebuffer bound now, under the frame block bound now.
     void drawAgentsWith(const CrowdSimulation& simulation, const Program& program, const CrowdDrawOptions& options);
+    /// The world's markers (samples, crumbs, bases; trails with options.trails)
+    /// into the framebuffer bound now, in the render state applied now, lit by
+    /// the frame block bound now (the course pipeline draws them into its light
+    /// buffer, depth-tested against the G-buffer's depth).
+    void drawMarkersWith(const CrowdSimulation& simulation, const CrowdView& view, const CrowdDrawOptions& options) {
+        drawMarkers(simulation, view, options);
+    }
     const Md2GpuModel& model(std::size_t type) const { return *m_models[type]; }
 
     /// The frame block of `view`, lit by `options`' sun and ambient light (for callers that draw more).
