@@ -32,7 +32,7 @@ PY
 }
 
 variant final 640x360
-for view in albedo normals tiles occlusion cascades lod trails; do variant "view-$view" 640x360 debug_view="$view"; done
+for view in albedo normals tiles occlusion cascades lod trails ids; do variant "view-$view" 640x360 debug_view="$view"; done
 variant without-shadows 640x360 shadows=false
 variant without-normal-maps 640x360 normal_maps=false
 variant without-occlusion 640x360 ssao=false

@@ -1118,6 +1118,7 @@ private:
                 m_drawMaterials[i] = materialOf(found);
                 const DrawItem drawn = drawItemOf(object, found, m_drawMaterials[i]);
                 CourseItem item;
+                item.id = object.id;   // the "ids" view shows the scene's own ids
                 item.model = drawn.model;
                 item.normalMatrix = drawn.normalMatrix;
                 item.material = &m_drawMaterials[i];

@@ -334,8 +334,10 @@ private:
                     m_placements.push_back(placement);
                 }
         }
-        for (const Placement& placement : m_placements) {
+        for (std::size_t i = 0; i < m_placements.size(); ++i) {
+            const Placement& placement = m_placements[i];
             CourseItem item;
+            item.id = kFirstFieldId + static_cast<std::uint32_t>(i);
             for (const std::unique_ptr<GpuMesh>& level : m_fieldMeshes[placement.mesh].levels) item.levels.push_back(level.get());
             item.model = placement.model;
             item.normalMatrix = glm::inverseTranspose(glm::mat3(placement.model));
@@ -384,6 +386,8 @@ private:
             m_footsteps.emplace_back(agents[i].position.x, agents[i].y, agents[i].position.y);
         }
     }
+
+    static constexpr std::uint32_t kFirstFieldId = 1u << 24;   // past any scene's ids: every copy its own colour
 
     struct Placement {
         std::size_t mesh = 0;

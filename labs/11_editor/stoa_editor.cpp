@@ -32,7 +32,7 @@ int usage(const std::string& problem) {
     if (!problem.empty()) std::fprintf(stderr, "stoa-editor: %s\n", problem.c_str());
     std::fprintf(stderr,
                  "usage: stoa-editor SCENE.json [--size WxH] [--screenshot FILE | --render FILE [--backend osmesa|egl]]\n"
-                 "       stoa-editor --scene NAME ...   (assets/scenes/NAME.json; --scene showcase: every lab at once)\n"
+                 "       stoa-editor --scene NAME ...   (a scene of assets/scenes/ by its name; --scene showcase: every lab at once)\n"
                  "Edits a scene file (docs/scene-files.md) in a window, or saves one picture of it.\n");
     return 2;
 }

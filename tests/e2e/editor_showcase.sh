@@ -48,7 +48,7 @@ echo "lower picture under a bright sun with shadows ($sr, $sg, $sb), without ($u
 [ $((ur + ug + ub)) -gt $((sr + sg + sb + 15)) ] || fail "switching the shadows off did not brighten the picture"
 
 if [ "$views" = views ]; then
-  for view in albedo normals positions specular tiles occlusion cascades lod trails; do
+  for view in albedo normals positions specular tiles occlusion cascades lod trails ids; do
     render "$view" debug_view="$view"
     percent=$(checker differ final.png "$view.png")
     echo "view $view differs from the final picture in $percent % of its pixels"

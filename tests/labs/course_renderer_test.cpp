@@ -181,7 +181,7 @@ private:
 
 TEST_CASE("Course views: every name maps to its view and back", "[course]") {
     const std::vector<std::string>& names = stoa::courseViewNames();
-    REQUIRE(names.size() == static_cast<std::size_t>(stoa::CourseView::Trails) + 1);   // the last view
+    REQUIRE(names.size() == static_cast<std::size_t>(stoa::CourseView::Ids) + 1);   // the last view
     for (std::size_t i = 0; i < names.size(); ++i) {
         const auto view = static_cast<stoa::CourseView>(i);
         CAPTURE(names[i]);

@@ -57,7 +57,8 @@ const char* toString(CoursePass pass) {
 
 const std::vector<std::string>& courseViewNames() {
     static const std::vector<std::string> names = {"final", "albedo",    "normals",  "positions", "specular",
-                                                   "tiles", "occlusion", "cascades", "lod",       "trails"};
+                                                   "tiles", "occlusion", "cascades", "lod",       "trails",
+                                                   "ids"};
     return names;
 }
 
@@ -83,7 +84,10 @@ CoursePrograms CoursePrograms::load(const Loader& load) {
     programs.occlusion = &load("basic/image.vert", "ssao/ssao.frag");
     programs.blur = &load("basic/image.vert", "ssao/blur.frag");
     programs.grey = &load("basic/image.vert", "ssao/ao_view.frag");
-    for (const Program* program : {programs.geometry, programs.agents, programs.agentsDepth, programs.sun, programs.sky})
+    programs.ids = &load("picking/ids.vert", "picking/ids.frag");
+    programs.idView = &load("basic/image.vert", "picking/id_view.frag");
+    for (const Program* program : {programs.geometry, programs.agents, programs.agentsDepth, programs.sun, programs.sky,
+                                   programs.ids})
         program->bindUniformBlock(FrameUniforms::kBlockName, FrameUniforms::kBinding);
     return programs;
 }
@@ -174,6 +178,7 @@ void CourseRenderer::render(const std::vector<CourseItem>& items, const CourseLi
             glClear(GL_COLOR_BUFFER_BIT);
         }
     }
+    if (settings.view == CourseView::Ids) drawIds(items, size, output);
     StateCache::current().bindFramebuffer(output);
     endPass(CoursePass::Present, timed);
     m_stats.totalSeconds = now() - start;
@@ -355,6 +360,36 @@ void CourseRenderer::drawMarkers(const Framebuffer& target, const CourseLighting
     CrowdDrawOptions options = crowd.options;
     options.trails = options.trails || settings.view == CourseView::Trails;
     crowd.renderer->drawMarkersWith(*crowd.simulation, view, options);
+}
+
+// Lab 07's ID pass over the drawn items (each its CourseItem::id, packed by the
+// student's packObjectId() into a GL_RGBA8UI target), shown in false colour.
+void CourseRenderer::drawIds(const std::vector<CourseItem>& items, glm::ivec2 size, GLuint output) {
+    if (!m_idTarget || m_idTarget->width() != size.x || m_idTarget->height() != size.y) {
+        FramebufferOptions options;
+        options.colorFormats = {GL_RGBA8UI};
+        m_idTarget = std::make_unique<Framebuffer>(size.x, size.y, options);
+    }
+    PassDescription pass = passInto(*m_idTarget);
+    pass.clear.depth = true;
+    pass.state.cull = CullMode::None;
+    beginPass(pass);
+    const GLuint background[4] = {0, 0, 0, 0};
+    glClearBufferuiv(GL_COLOR, 0, background);   // an integer target clears with its own call
+    const Program& ids = *m_programs.ids;
+    ids.use();
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (m_levels[i] < 0) continue;
+        ids.set("uModel", items[i].model);
+        ids.set("uObjectId", items[i].id);
+        items[i].levels[static_cast<std::size_t>(m_levels[i])]->draw();
+    }
+    StateCache::current().bindFramebuffer(output);
+    const Program& view = *m_programs.idView;
+    view.use();
+    m_idTarget->bindColorTexture(kSkyUnit);
+    view.set("uIds", kSkyUnit);
+    m_overlay.draw(view, {0, 0, size.x, size.y});
 }
 
 void CourseRenderer::drawSky(const Framebuffer& target) {

@@ -38,6 +38,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -60,6 +61,7 @@ struct CourseItem {
     const Texture2D* diffuseMap = nullptr;
     const Texture2D* normalMap = nullptr;      // tangent-space; nullptr: the mesh's own normals
     BoundingSphere sphere;                     // world space; radius 0: never culled, always full detail
+    std::uint32_t id = 0;                      // lab 07's ID buffer (the "ids" view); 0: the background's
 };
 
 enum class CoursePass { Culling = 0, Shadows, Geometry, Occlusion, Lighting, Sky, Present, Count };
@@ -72,10 +74,11 @@ enum class CourseView {
     AmbientOcclusion,                                   // lab 09's blurred occlusion
     Cascades,                                           // lab 05: each cascade tinted
     LevelsOfDetail,                                     // lab 06: each object tinted by its level
-    Trails                                              // lab 10: the final picture with each agent's trail
+    Trails,                                             // lab 10: the final picture with each agent's trail
+    Ids                                                 // lab 07: each object's 32-bit id in false colour
 };
 /// The names the scene file and the renderer panel use: "final", "albedo",
-/// "normals", "positions", "specular", "tiles", "occlusion", "cascades", "lod", "trails".
+/// "normals", "positions", "specular", "tiles", "occlusion", "cascades", "lod", "trails", "ids".
 const char* toString(CourseView view);
 /// The view called `name`; false when there is none.
 bool courseViewFromName(const std::string& name, CourseView& view);
@@ -156,6 +159,8 @@ struct CoursePrograms {
     const Program* occlusion = nullptr;      // basic/image.vert + ssao/ssao.frag
     const Program* blur = nullptr;           // basic/image.vert + ssao/blur.frag
     const Program* grey = nullptr;           // basic/image.vert + ssao/ao_view.frag
+    const Program* ids = nullptr;            // picking/ids.vert + picking/ids.frag
+    const Program* idView = nullptr;         // basic/image.vert + picking/id_view.frag
 };
 
 class CourseRenderer {
@@ -186,6 +191,7 @@ private:
                         const CourseSettings& settings, const CourseCrowd* crowd);
     void drawSun(const CourseLighting& lighting, const Camera& camera, const CourseSettings& settings);
     void drawSky(const Framebuffer& target);
+    void drawIds(const std::vector<CourseItem>& items, glm::ivec2 size, GLuint output);
     void drawMarkers(const Framebuffer& target, const CourseLighting& lighting, const Camera& camera,
                      const CourseSettings& settings, const CourseCrowd& crowd);
     void endPass(CoursePass pass, bool timed);
@@ -203,6 +209,7 @@ private:
     CubeMap m_sky;
     GpuMesh m_skyCube;
     TextureOverlay m_overlay;
+    std::unique_ptr<Framebuffer> m_idTarget;   // GL_RGBA8UI, for the "ids" view
     std::vector<int> m_levels;
     CourseStats m_stats;
     glm::mat4 m_view{1.0f};
