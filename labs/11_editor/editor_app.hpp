@@ -154,16 +154,6 @@ public:
         m_searchPath = resources.shaderSearchPath();   // for the deferred passes, loaded when first drawn
         m_assets = std::make_unique<EditorAssets>();
         m_assets->setReloadDispatch(assetsToReload);   // yours, for the files of a scene file's assets
-        // Lab 04's tangents on every mesh, for the deferred pipeline's normal maps.
-        m_assets->setMeshFilter([this](Mesh& mesh) {
-            if (m_tangentsMissing) return;
-            try {
-                computeTangents(mesh);
-            } catch (const NotImplemented& missing) {
-                m_tangentsMissing = true;
-                log("normal maps off: " + missing.function() + " (" + missing.lab() + ") is still a stub in this build");
-            }
-        });
     }
 
     void loadCase(const CaseSpec& spec) override {
@@ -237,6 +227,15 @@ public:
             return true;
         }
         case 'x': deleteSelection(); return true;
+        case 'p': {   // the pipeline: forward (lab 11) or deferred (labs 04-10), an edit
+            EditorRendererSettings settings = m_scene.renderer;
+            settings.deferred = !settings.deferred;
+            const EditorRendererSettings before = m_scene.renderer;
+            m_history.perform(m_scene, {"renderer settings", [settings](EditorScene& s) { s.renderer = settings; },
+                                        [before](EditorScene& s) { s.renderer = before; }, ""});
+            log(settings.deferred ? "pipeline: deferred (labs 04-10)" : "pipeline: forward (lab 11)");
+            return true;
+        }
         case ',':
         case '.': {   // turn the selection 15 degrees about +Y, one edit each press
             const EditorObject* object = m_scene.findObject(m_selected);
@@ -380,6 +379,7 @@ public:
                 "u / r        undo / redo",
                 "m / x        next material for the selection / delete it",
                 ", / .        turn the selection 15 degrees about y (one edit each)",
+                "p            pipeline: forward (lab 11) / deferred (labs 04-10), an edit",
                 "- / =        scale the selection by 1/1.1 / 1.1 (one edit each)",
                 "b            throw a ball (deferred pipeline: lab 07's BVH bounce, sparks)",
                 "v            switch view: shaded / the stencil pick pass",
@@ -1104,8 +1104,20 @@ private:
     /// loaded at the first deferred frame. A lab's function that is still a
     /// stub switches the pipeline off with a line in the log.
     void drawDeferred() {
-        if (!m_pipeline)
+        if (!m_pipeline) {
             m_pipeline = std::make_unique<EditorPipeline>(m_searchPath, [this](const std::string& line) { log(line); });
+            // Lab 04's tangents on every mesh from now on, for the normal maps
+            // (the forward pass, and so every graded case, does without).
+            m_assets->setMeshFilter([this](Mesh& mesh) {
+                if (m_tangentsMissing) return;
+                try {
+                    computeTangents(mesh);
+                } catch (const NotImplemented& missing) {
+                    m_tangentsMissing = true;
+                    log("normal maps off: " + missing.function() + " (" + missing.lab() + ") is still a stub in this build");
+                }
+            });
+        }
         const GLuint output = StateCache::current().drawFramebuffer();
         try {
             m_pipeline->prepare(m_scene, m_sceneFile.empty() ? paths::assetsDir() : m_sceneFile.parent_path(), *m_assets);

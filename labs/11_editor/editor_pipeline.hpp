@@ -240,10 +240,7 @@ private:
         auto found = m_cpuMeshes.find(name);
         if (found != m_cpuMeshes.end()) return found->second;
         std::vector<Mesh>& meshes = m_cpuMeshes[name];
-        if (name == "shape:cube") meshes.push_back(shapes::cube(1.0f));
-        else if (name == "shape:sphere") meshes.push_back(shapes::sphere(0.5f, 32, 16));
-        else if (name == "shape:cylinder") meshes.push_back(shapes::cylinder(0.5f, 1.0f, 32));
-        else if (name == "shape:plane") meshes.push_back(shapes::plane(1.0f, 1));
+        if (std::optional<Mesh> shape = shapeMesh(name)) meshes.push_back(std::move(*shape));
         else if (const std::filesystem::path path = resolve(name, folder, paths::assetsDir()); !path.empty()) {
             try {
                 for (ModelPart& part : loadObj(path).parts) meshes.push_back(std::move(part.mesh));
@@ -252,6 +249,15 @@ private:
             }
         }
         return meshes;
+    }
+
+    // A scene file's shape as a mesh, made as EditorAssets makes it; nullopt for any other name.
+    static std::optional<Mesh> shapeMesh(const std::string& name) {
+        if (name == "shape:cube") return shapes::cube(1.0f);
+        if (name == "shape:sphere") return shapes::sphere(0.5f, 32, 16);
+        if (name == "shape:cylinder") return shapes::cylinder(0.5f, 1.0f, 32);
+        if (name == "shape:plane") return shapes::plane(1.0f, 1);
+        return std::nullopt;
     }
 
     void makeRenderer() {
@@ -286,11 +292,9 @@ private:
         for (const std::string& name : names) {
             try {
                 Mesh mesh;
-                if (name == "shape:cube") mesh = shapes::cube(1.0f);
-                else if (name == "shape:sphere") mesh = shapes::sphere(0.5f, 32, 16);
-                else if (name == "shape:cylinder") mesh = shapes::cylinder(0.5f, 1.0f, 32);
-                else if (name == "shape:plane") mesh = shapes::plane(1.0f, 1);
-                else {
+                if (std::optional<Mesh> shape = shapeMesh(name)) {
+                    mesh = std::move(*shape);
+                } else {
                     const std::filesystem::path path = resolve(name, folder, paths::assetsDir());
                     if (path.empty()) throw InputError(name, 0, "no such file next to the scene file or in assets/");
                     mesh = loadObj(path).parts.front().mesh;

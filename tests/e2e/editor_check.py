@@ -12,6 +12,11 @@
       Over rows TOP..BOTTOM-1 (fractions of the height, 0..1): "r g b coloured"
       with the mean colour (0..255) and the percentage of strongly coloured
       pixels (brightest channel at least 60 above the dimmest).
+  editor_check.py showcase IMAGE.png
+      Passes (exit 0) when IMAGE looks like the showcase: sky at the top (the
+      top eighth bluish and bright) and the point lights' coloured pools on the
+      ground (3 % or more of the bottom two fifths strongly coloured); says what
+      it measured, and what is wrong (exit 1).
   editor_check.py differ A.png B.png
       The percentage of pixels whose colours differ by more than 24 in a channel
       (the two pictures the same size).
@@ -125,6 +130,20 @@ def band_statistics(path, top, bottom):
     return [round(v / max(count, 1)) for v in sums] + [round(100.0 * coloured / max(count, 1), 1)]
 
 
+def check_showcase(path):
+    r, g, b, _ = band_statistics(path, 0.0, 0.12)
+    print(f"sky band: ({r}, {g}, {b})")
+    if not (b > 150 and b >= r):
+        print(f"the top of {path} is not sky: ({r}, {g}, {b})")
+        return 1
+    r, g, b, coloured = band_statistics(path, 0.6, 1.0)
+    print(f"ground band: ({r}, {g}, {b}), {coloured} % strongly coloured")
+    if coloured < 3:
+        print(f"too few coloured pixels on the ground of {path} ({coloured} %): the point lights are missing")
+        return 1
+    return 0
+
+
 def differing_percent(a_path, b_path):
     wa, ha, ca, a = read_png(a_path)
     wb, hb, cb, b = read_png(b_path)
@@ -147,6 +166,8 @@ def main(argv):
         print(*mean_colour(argv[2], int(argv[3]), int(argv[4])))
     elif command == "band" and len(argv) == 5:
         print(*band_statistics(argv[2], float(argv[3]), float(argv[4])))
+    elif command == "showcase" and len(argv) == 3:
+        return check_showcase(argv[2])
     elif command == "differ" and len(argv) == 4:
         print(differing_percent(argv[2], argv[3]))
     elif command == "write-png" and len(argv) == 6:

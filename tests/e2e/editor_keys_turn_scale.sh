@@ -3,7 +3,10 @@
 # stoa-editor in a window under Xvfb on a copy of assets/scenes/example.json:
 # a click selects the ball; `.` turns it 15 degrees about y and `=` scales it
 # by 1.1, one edit each; Ctrl+S saves them (rotation y 15, scale 1.1); u twice
-# takes both back, and the next save is the original file again.
+# takes both back, and the next save is the original file again. Then p
+# switches to the deferred pipeline, whose first frame loads the meshes again
+# with lab 04's tangents: the floor, whose material gets a normal map here,
+# must be lit (not black, as a normal map without tangents draws it).
 set -euo pipefail
 program=$1 work=$2
 
@@ -13,8 +16,14 @@ source "$(dirname "$0")/editor_common.sh"   # checker, screenshot, wait_for_coun
 cd "$work"
 rm -f ./*.png scene.json
 source_scene="$editor_tests_dir/../../assets/scenes/example.json"
-cp "$source_scene" scene.json
-cp "$source_scene" original.json
+# The floor's material gets a normal map (a height map the editor turns into one).
+python3 - "$source_scene" scene.json <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+next(m for m in scene["materials"] if m["name"] == "limestone")["normal_map"] = "acropolis/wall_height.pgm"
+json.dump(scene, open(sys.argv[2], "w"), indent=2)
+PY
+cp scene.json original.json
 
 start_lab_window scene.json
 screenshot first-frame.png
@@ -49,6 +58,18 @@ xdotool key u
 wait_for_count "^undo$" 2 "the second u did not undo"
 xdotool key ctrl+s
 wait_for_count "^saved .*scene\.json$" 2 "the second Ctrl+S did not save"
-cmp original.json scene.json || fail "after two undos the saved file is not the original"
+python3 -c "import json,sys; sys.exit(json.load(open('original.json')) != json.load(open('scene.json')))" ||
+  fail "after two undos the saved file is not the original"
+
+xdotool key p
+wait_for_output "^pipeline: deferred" "p did not switch to the deferred pipeline"
+screenshot deferred.png
+read -r fx fy <<< "$(checker pixel scene.json "$WIDTH" "$HEIGHT" -4 0 4)"   # the floor, left of the ball
+read -r r g b <<< "$(checker colour deferred.png "$fx" "$fy")"
+echo "the floor in the deferred pipeline at ($fx, $fy): ($r, $g, $b)"
+[ $((r + g + b)) -gt 60 ] || fail "the normal-mapped floor is black in the deferred pipeline (tangents missing?)"
+if grep -E "normal maps off|needs" "$work/stdout.txt"; then fail "a pass of the deferred pipeline is missing (above)"; fi
+xdotool key u   # the switch was an edit: undone, nothing is left unsaved
+wait_for_count "^undo$" 3 "u did not undo the switch of pipeline"
 quit_with_escape
-echo "turned, scaled, saved, undone"
+echo "turned, scaled, saved, undone; the deferred pipeline draws the normal-mapped floor"

@@ -19,12 +19,7 @@ screenshot first-frame.png
 xdotool key F1
 wait_for_output "^ui panel off$" "F1 did not hide the panels"
 screenshot showcase.png
-read -r r g b coloured <<< "$(checker band showcase.png 0 0.12)"
-echo "sky band: ($r, $g, $b)"
-[ "$b" -gt 150 ] && [ "$b" -ge "$r" ] || fail "the top of the showcase window is not sky: ($r, $g, $b)"
-read -r r g b coloured <<< "$(checker band showcase.png 0.6 1)"
-echo "ground band: ($r, $g, $b), $coloured % strongly coloured"
-awk "BEGIN { exit !($coloured >= 3) }" || fail "too few coloured pixels on the ground ($coloured %): the point lights are missing"
+checker showcase showcase.png || fail "the window does not look like the showcase (above)"
 sleep 2
 screenshot later.png
 percent=$(checker differ showcase.png later.png)

@@ -38,9 +38,22 @@ void EditorAssets::makeShapes() {
 
 void EditorAssets::setMeshFilter(std::function<void(Mesh&)> filter) {
     m_meshFilter = std::move(filter);
-    for (AssetCache* cache : {m_assets.get(), m_scene.get(), m_shaders.get()})
-        if (cache) addLoaders(*cache);
+    // The models loaded so far went through the old filter: fresh caches for
+    // assets/ and the scene's folder load them again (textures and worlds too,
+    // when next asked for); the programs' cache stays.
     m_models.clear();
+    m_textures.clear();
+    m_worlds.clear();
+    m_failed.clear();
+    m_assets = std::make_unique<AssetCache>(paths::assetsDir());
+    addLoaders(*m_assets);
+    if (m_scene) {
+        const fs::path folder = m_scene->root();
+        m_scene = std::make_unique<AssetCache>(folder);
+        addLoaders(*m_scene);
+    }
+    addLoaders(*m_shaders);
+    if (m_dispatch) setReloadDispatch(m_dispatch);
     makeShapes();
 }
 

@@ -39,7 +39,8 @@ public:
     /// Who decides which changed assets reload (AssetCache::setReloadDispatch).
     void setReloadDispatch(ReloadDispatch dispatch);
     /// Runs on every mesh (shapes and OBJ parts) before upload, from now on:
-    /// the editor's lab-04 tangents for normal maps. The shapes are made again.
+    /// the editor's lab-04 tangents for normal maps. The shapes are made again
+    /// and the models loaded so far are loaded again when next asked for.
     void setMeshFilter(std::function<void(Mesh&)> filter);
     /// Polls the files and reloads what the dispatch says is due.
     void update(double now);
