@@ -10,7 +10,8 @@
 //                                             the same picture headless
 //   stoa-editor --scene showcase              a scene of assets/scenes/ by name: the
 //                                             showcase has every lab on (docs/showcase.md)
-//   ... --size 1280x720                       the window's (or picture's) size
+//   ... --size 1280x720                       the picture's size (--render, --screenshot);
+//                                             the window opens at 960 x 640
 // A scene named without a folder is looked up in assets/scenes/ too, so
 // `stoa-editor example.json` opens the example. docs/scene-files.md is the format.
 
