@@ -3,9 +3,10 @@
 // (lab 06's culling and levels of detail), its wandering lights (lab 08), its
 // crowd (lab 10) and a ball thrown into it that bounces off the triangles of a
 // BVH and throws sparks (lab 07), drawn by stoa::CourseRenderer with the
-// students' code of labs 04-10 (your own, when you build your track). Not one of lab 11's
-// exercises: EditorLabApp (editor_app.hpp) uses it when the renderer panel's
-// "deferred" is on, and the showcase (docs/showcase.md) is drawn by it.
+// students' code of labs 04-10 (your own, when you build your track). Not one
+// of lab 11's exercises: EditorLabApp (editor_app.hpp) uses it when the
+// renderer panel's "deferred" is on, and the showcase (docs/showcase.md) is
+// drawn by it.
 
 #include "../06_culling/culling.hpp"
 #include "../07_picking/bounce.hpp"
@@ -40,10 +41,10 @@
 
 #include <cmath>
 #include <filesystem>
-#include <map>
-#include <optional>
 #include <functional>
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
