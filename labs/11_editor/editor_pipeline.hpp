@@ -241,7 +241,7 @@ private:
         auto found = m_cpuMeshes.find(name);
         if (found != m_cpuMeshes.end()) return found->second;
         std::vector<Mesh>& meshes = m_cpuMeshes[name];
-        if (std::optional<Mesh> shape = shapeMesh(name)) meshes.push_back(std::move(*shape));
+        if (std::optional<Mesh> shape = EditorAssets::shapeMesh(name)) meshes.push_back(std::move(*shape));
         else if (const std::filesystem::path path = resolve(name, folder, paths::assetsDir()); !path.empty()) {
             try {
                 for (ModelPart& part : loadObj(path).parts) meshes.push_back(std::move(part.mesh));
@@ -250,15 +250,6 @@ private:
             }
         }
         return meshes;
-    }
-
-    // A scene file's shape as a mesh, made as EditorAssets makes it; nullopt for any other name.
-    static std::optional<Mesh> shapeMesh(const std::string& name) {
-        if (name == "shape:cube") return shapes::cube(1.0f);
-        if (name == "shape:sphere") return shapes::sphere(0.5f, 32, 16);
-        if (name == "shape:cylinder") return shapes::cylinder(0.5f, 1.0f, 32);
-        if (name == "shape:plane") return shapes::plane(1.0f, 1);
-        return std::nullopt;
     }
 
     void makeRenderer() {
@@ -293,7 +284,7 @@ private:
         for (const std::string& name : names) {
             try {
                 Mesh mesh;
-                if (std::optional<Mesh> shape = shapeMesh(name)) {
+                if (std::optional<Mesh> shape = EditorAssets::shapeMesh(name)) {
                     mesh = std::move(*shape);
                 } else {
                     const std::filesystem::path path = resolve(name, folder, paths::assetsDir());

@@ -25,15 +25,20 @@ void EditorAssets::addLoaders(AssetCache& cache) const {
     addDataAssetLoaders(cache);
 }
 
+std::optional<Mesh> EditorAssets::shapeMesh(const std::string& name) {
+    if (name == "shape:cube") return shapes::cube(1.0f);
+    if (name == "shape:sphere") return shapes::sphere(0.5f, 32, 16);
+    if (name == "shape:cylinder") return shapes::cylinder(0.5f, 1.0f, 32);
+    if (name == "shape:plane") return shapes::plane(1.0f, 1);
+    return std::nullopt;
+}
+
 void EditorAssets::makeShapes() {
-    const auto upload = [&](Mesh mesh) {
+    for (const std::string& name : shapeNames()) {
+        Mesh mesh = *shapeMesh(name);
         if (m_meshFilter) m_meshFilter(mesh);
-        return std::make_shared<GpuMesh>(mesh);
-    };
-    m_shapes["shape:cube"] = upload(shapes::cube(1.0f));
-    m_shapes["shape:sphere"] = upload(shapes::sphere(0.5f, 32, 16));
-    m_shapes["shape:cylinder"] = upload(shapes::cylinder(0.5f, 1.0f, 32));
-    m_shapes["shape:plane"] = upload(shapes::plane(1.0f, 1));
+        m_shapes[name] = std::make_shared<GpuMesh>(mesh);
+    }
 }
 
 void EditorAssets::setMeshFilter(std::function<void(Mesh&)> filter) {

@@ -22,6 +22,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -49,6 +50,9 @@ public:
 
     /// The shapes' names, in the order an asset browser lists them.
     static const std::vector<std::string>& shapeNames();
+    /// The shape called `name` as a mesh on the CPU, as meshes() draws it (for
+    /// code that needs its triangles: the ball's BVH); nullopt for other names.
+    static std::optional<Mesh> shapeMesh(const std::string& name);
     /// The OBJ files under assets/ (names relative to it), for an asset browser.
     std::vector<std::string> modelNames() const;
 
