@@ -70,7 +70,7 @@ int runGrade(const Options& options, const Environment& env) {
     auto printProgress = [&](std::size_t, const GradeResult& result, std::size_t done, std::size_t total) {
         env.err << progressLine(result, done, total) << std::endl;
     };
-    std::vector<GradeResult> results = gradeCases(jobs, runSettings(options), options.jobs, printProgress);
+    std::vector<GradeResult> results = gradeCases(jobs, runSettings(options, env.sourceDir, workDir), options.jobs, printProgress);
 
     // The cascade runs (Cascade.hpp), for the labs whose own run lost points: one
     // with full marks already counts, as it would on a tie.
@@ -96,7 +96,7 @@ int runGrade(const Options& options, const Environment& env) {
     if (!cascadeRun.empty()) {
         env.err << "cascade runs (the lab with the earlier labs' solutions):" << std::endl;
         std::vector<GradeResult> cascadeResults =
-            gradeCases(cascadeRun, runSettings(options), options.jobs, printProgress);
+            gradeCases(cascadeRun, runSettings(options, env.sourceDir, workDir), options.jobs, printProgress);
         // Each lab's cascade run right after its own, as the reports list them.
         std::vector<CaseJob> orderedJobs;
         std::vector<GradeResult> orderedResults;

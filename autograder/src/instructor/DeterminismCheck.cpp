@@ -72,7 +72,7 @@ int runDeterminismCheck(const Options& options, const Environment& env) {
         checks[i].name = cases[i].lab + "/" + cases[i].spec.name;
         checks[i].renders.resize(variants.size());
     }
-    RunSettings base = runSettings(options);
+    RunSettings base = runSettings(options, env.sourceDir, workDir);
     std::size_t total = cases.size() * variants.size();
     forEachInParallel(total, options.jobs, [&](std::size_t index) {
         std::size_t caseIndex = index / variants.size();

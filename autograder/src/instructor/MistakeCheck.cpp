@@ -189,7 +189,7 @@ int runCheckMistakes(const Options& options, const Environment& env) {
             labels[i] = "mistake " + run.mistake.name;
     HintGallery gallery = HintGallery::load(jobs);   // read before any lab program runs
     std::vector<GradeResult> results = gradeCases(
-        jobs, runSettings(options), options.jobs,
+        jobs, runSettings(options, env.sourceDir, workDir), options.jobs,
         [&](std::size_t index, const GradeResult& result, std::size_t done, std::size_t total) {
             env.err << progressLine(result, done, total, labels[index]) << std::endl;
         });

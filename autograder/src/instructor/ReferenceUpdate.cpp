@@ -78,9 +78,7 @@ int runUpdateReferences(const Options& options, const Environment& env) {
         return 1;
     }
 
-    RunSettings settings = runSettings(options);
-    ProcessLimits infoLimits = settings.limits;
-    infoLimits.timeoutSeconds = kInfoTimeoutSeconds;
+    ProcessLimits infoLimits = withTimeout(defaultLimits(kInfoTimeoutSeconds), kInfoTimeoutSeconds);
     std::vector<std::string> refusals;
     for (const PlannedLab& lab : labs) {
         ProcessOutcome info = runProcess({lab.program.string(), "--info"}, {}, infoLimits);
@@ -100,6 +98,7 @@ int runUpdateReferences(const Options& options, const Environment& env) {
     }
 
     std::filesystem::path workDir = makeWorkDir(options.workDir);
+    RunSettings settings = runSettings(options, env.sourceDir, workDir);
     std::vector<CaseJob> jobs;
     for (const PlannedLab& lab : labs) {
         std::vector<CaseJob> labJobs = caseJobs(lab, lab.program, env.sourceDir, workDir);

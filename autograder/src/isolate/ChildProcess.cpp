@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <mutex>
 #include <cstring>
 #include <sstream>
@@ -41,6 +42,21 @@ extern "C" void killChildrenAndExit(int signal) {
     defaultAction.sa_handler = SIG_DFL;
     sigaction(signal, &defaultAction, nullptr);
     raise(signal);
+}
+
+// The grader's own argv in memory: from argv[0] (glibc's program_invocation_name)
+// over as many bytes as /proc/self/cmdline holds. Read once.
+std::size_t graderArgumentsLength() {
+    static const std::size_t length = [] {
+        std::FILE* file = std::fopen("/proc/self/cmdline", "re");
+        if (!file) return std::size_t{0};
+        std::size_t total = 0;
+        char buffer[4096];
+        for (std::size_t count; (count = std::fread(buffer, 1, sizeof buffer, file)) > 0;) total += count;
+        std::fclose(file);
+        return total;
+    }();
+    return length;
 }
 
 double secondsSince(Clock::time_point start) {
@@ -202,6 +218,14 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
     setup.addLimit(RLIMIT_CORE, 0);
     setup.setEnvironment(limits.environment);
     setup.unshareFlags = isolationFlags(limits.isolateNetwork, limits.ownPidNamespace);
+    FileSandbox sandbox(limits.files);
+    if (!sandbox.error().empty()) {
+        outcome.startError = "could not confine the files of " + argv[0] + ": " + sandbox.error();
+        return outcome;
+    }
+    setup.fileSandbox = sandbox.descriptor();
+    setup.graderArguments = program_invocation_name;
+    setup.graderArgumentsLength = program_invocation_name ? graderArgumentsLength() : 0;
     const bool ownPids = (setup.unshareFlags & CLONE_NEWPID) != 0;
     // The child and its namespace's process 1 are in the group beside the program.
     const std::size_t helpers = ownPids ? 2 : 0;
@@ -251,7 +275,8 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
         killStrayProcesses(pid);
         outcome.startError = failure[0] == 0
             ? "could not enter the work directory " + setup.workDir + ": " + std::strerror(failure[1])
-            : "could not start " + argv[0] + ": " + std::strerror(failure[1]);
+            : failure[0] == 2 ? "could not confine the files of " + argv[0] + ": " + std::strerror(failure[1])
+                              : "could not start " + argv[0] + ": " + std::strerror(failure[1]);
         outcome.seconds = secondsSince(start);
         return outcome;
     }

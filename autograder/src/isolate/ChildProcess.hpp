@@ -11,11 +11,16 @@
 //     grader is a child subreaper and kills the processes it adopts after each
 //     program (StrayProcesses.hpp); the outcome counts them (strayProcesses);
 //   - no network: the child unshares a user and a network namespace before exec;
+//   - its files: with `files` confined, the program may read only those trees and
+//     write only its own folder (Landlock, FileSandbox.hpp), and sees a /proc of
+//     its own PID namespace, without the grader's processes;
 //   - a process count: RLIMIT_NPROC (this user's tasks now + a margin, or the
 //     margin alone inside the child's own user namespace), and a watchdog that
 //     kills the group once it holds more than `maxProcesses` processes (the only
 //     guard when the grader runs as root, whom RLIMIT_NPROC does not bind);
 //   - output made printable: binary bytes and control characters are replaced.
+
+#include "FileSandbox.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -36,6 +41,7 @@ struct ProcessLimits {
     bool isolateNetwork = true;                           // unshare the network where the OS allows it
     bool ownPidNamespace = true;                          // a PID namespace where the OS allows it
     std::vector<std::string> environment;                 // "NAME=value" set in the child's environment
+    FileAccess files;                                     // what it may read and write; unconfined by default
 };
 
 /// The limits the grader uses for a given timeout: CPU time timeout x cores + 5 s

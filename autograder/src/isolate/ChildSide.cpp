@@ -1,10 +1,15 @@
 #include "ChildSide.hpp"
 
+#include "FileSandbox.hpp"
+
 #include <cerrno>
 #include <csignal>
+#include <cstring>
 
 #include <fcntl.h>
 #include <sched.h>
+#include <sys/mount.h>
+#include <sys/prctl.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
 
@@ -22,17 +27,24 @@ void writeProcFile(const char* path, const std::string& text) {
     close(fd);
 }
 
-// The program's side: the work folder, the limits, exec. On failure the grader
-// learns the step (0: chdir, 1: exec or fork) and errno through `errorFd`.
+// The program's side: the work folder, the limits, the file sandbox, exec. On
+// failure the grader learns the step (0: chdir, 1: exec or fork, 2: the
+// sandbox) and errno through `errorFd`.
 [[noreturn]] void execProgram(const ChildSetup& setup, int errorFd) {
     int failure[2] = {0, 0};
     if (!setup.workDir.empty() && chdir(setup.workDir.c_str()) != 0) {
         failure[1] = errno;
     } else {
         for (const ChildSetup::Limit& limit : setup.limits) setrlimit(limit.resource, &limit.value);
-        execve(setup.argv[0], setup.argv.data(), setup.envp.data());
-        failure[0] = 1;
-        failure[1] = errno;
+        int confined = setup.fileSandbox >= 0 ? enterFileSandbox(setup.fileSandbox) : 0;
+        if (confined != 0) {
+            failure[0] = 2;
+            failure[1] = confined;
+        } else {
+            execve(setup.argv[0], setup.argv.data(), setup.envp.data());
+            failure[0] = 1;
+            failure[1] = errno;
+        }
     }
     ssize_t written = write(errorFd, failure, sizeof failure);
     (void)written;
@@ -54,6 +66,22 @@ void writeProcFile(const char* path, const std::string& text) {
 // of the namespace too; the program cannot kill it (a namespace's process 1
 // ignores the signals its namespace sends it without a handler, SIGKILL included).
 [[noreturn]] void runNamespaceInit(const ChildSetup& setup, int errorFd, int reportFd) {
+    // A /proc of this namespace, in a mount namespace of its own (private first,
+    // so that nothing propagates back): the grader's processes, their command
+    // lines and folders are not in it. Should the mount fail, Landlock still
+    // keeps the program out of their files (FileSandbox.hpp).
+    if (setup.unshareFlags & CLONE_NEWNS) {
+        if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) == 0)
+            mount("proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, nullptr);
+    }
+    // The one process of the grader's in the program's /proc is this one: its
+    // name and command line say nothing of the grader's.
+    prctl(PR_SET_NAME, "stoa-init", 0, 0, 0);
+    static const char kName[] = "stoa-init";
+    if (setup.graderArguments && setup.graderArgumentsLength >= sizeof kName) {
+        memset(setup.graderArguments, 0, setup.graderArgumentsLength);
+        memcpy(setup.graderArguments, kName, sizeof kName);
+    }
     pid_t program = fork();
     if (program == 0) execProgram(setup, errorFd);
     if (program < 0) reportForkFailure(errorFd);

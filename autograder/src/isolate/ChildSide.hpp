@@ -24,6 +24,12 @@ struct ChildSetup {
     std::vector<char*> envp;
     std::string workDir;
     int unshareFlags = 0;
+    int fileSandbox = -1;   // a Landlock ruleset (FileSandbox.hpp) entered right before exec; -1: none
+    // The grader's own command line in memory (argv[0] on, its length): a PID
+    // namespace's process 1 is a copy of the grader and blanks it, so that the
+    // program cannot read the grader's paths from /proc/1/cmdline.
+    char* graderArguments = nullptr;
+    std::size_t graderArgumentsLength = 0;
     int descriptorLimit = static_cast<int>(std::min<long>(sysconf(_SC_OPEN_MAX), 1 << 16));
     // In a new user namespace the child maps the grader's own uid and gid onto
     // themselves (the lines for /proc/self/uid_map and gid_map, made before the
@@ -65,7 +71,9 @@ struct ChildSetup {
 /// namespaces of `setup.unshareFlags`, then the program. With CLONE_NEWPID it
 /// starts the namespace's process 1, which starts the program and writes its
 /// wait status and the count of processes it left to `reportFd`. A failure to
-/// start goes to `errorFd` as {step (0: chdir, 1: exec or fork), errno}.
+/// start goes to `errorFd` as {step (0: chdir, 1: exec or fork, 2: the file
+/// sandbox), errno}. With CLONE_NEWNS as well, process 1 mounts a /proc of its
+/// own namespace: the program sees only its own processes there.
 [[noreturn]] void runChild(const ChildSetup& setup, int outputFd, int errorFd, int reportFd);
 
 } // namespace stoa::grader

@@ -125,8 +125,13 @@ int pidNamespaceFlags() {
     static std::once_flag probed;
     static int flags = 0;
     std::call_once(probed, [] {
-        if (childCanUnshare(CLONE_NEWUSER | CLONE_NEWPID)) flags = CLONE_NEWUSER | CLONE_NEWPID;
-        else if (childCanUnshare(CLONE_NEWPID)) flags = CLONE_NEWPID;
+        // With a mount namespace where allowed: its process 1 mounts its own /proc.
+        for (int candidate : {CLONE_NEWUSER | CLONE_NEWPID | CLONE_NEWNS, CLONE_NEWUSER | CLONE_NEWPID,
+                              CLONE_NEWPID | CLONE_NEWNS, CLONE_NEWPID})
+            if (childCanUnshare(candidate)) {
+                flags = candidate;
+                break;
+            }
     });
     return flags;
 }

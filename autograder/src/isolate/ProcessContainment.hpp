@@ -44,7 +44,8 @@ int networkIsolationFlags();
 /// The unshare() flags a child can use to get its own PID namespace, in which
 /// nothing it starts can outlive it (the namespace's first process ending kills
 /// the rest): CLONE_NEWUSER | CLONE_NEWPID where user namespaces are allowed,
-/// CLONE_NEWPID alone for root without them, 0 where neither. Probed once.
+/// CLONE_NEWPID alone for root without them, 0 where neither; with CLONE_NEWNS
+/// where a mount namespace is allowed too (for a /proc of its own). Probed once.
 int pidNamespaceFlags();
 
 /// The flags a child unshares for `network` and `pids` together: their union

@@ -1,6 +1,7 @@
 #include "CaseRunner.hpp"
 
 #include "Difference.hpp"
+#include "LabSandbox.hpp"
 
 #include <stoa/core/InputError.hpp>
 #include <stoa/image/ImageCompare.hpp>
@@ -78,7 +79,12 @@ RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings) {
             argv.push_back("--cases");
             argv.push_back(job.casesFile.string());
         }
-        outcome.process = runProcess(argv, job.workDir, settings.limits);
+        ProcessLimits limits = settings.limits;
+        limits.files = labProgramAccess(job, settings);
+        limits.environment.push_back("TMPDIR=" + job.workDir.string());
+        if (!settings.shaderCache.empty())
+            limits.environment.push_back("MESA_SHADER_CACHE_DIR=" + settings.shaderCache.string());
+        outcome.process = runProcess(argv, job.workDir, limits);
         if (outcome.process.strayProcesses > 0) {
             outcome.reason = strayReason(outcome.process);
             return outcome;

@@ -34,6 +34,12 @@ struct RunSettings {
     ProcessLimits limits = defaultLimits(60.0);
     std::string backend;                  // passed as --backend when not empty
     bool caseTimeouts = false;            // gradeCases() applies each job's `timeouts` instead of limits' timeout
+    /// What every lab program may read (labProgramBaseAccess(), LabSandbox.hpp);
+    /// each job adds its build, its case folder and its track's files. Unconfined
+    /// by default.
+    FileAccess files;
+    std::filesystem::path sourceDir;      // the Stoa tree whose solutions/ a job may be granted
+    std::filesystem::path shaderCache;    // Mesa's shader cache for the lab programs; empty: Mesa's own choice
 };
 
 struct RenderOutcome {
@@ -46,7 +52,9 @@ struct RenderOutcome {
     ProcessOutcome process;
 };
 
-/// Runs the program for one case. Never throws: every failure is an outcome.
+/// Runs the program for one case, confined to the files labProgramAccess() gives
+/// it (LabSandbox.hpp), with TMPDIR its case folder. Never throws: every failure
+/// is an outcome.
 RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings);
 
 /// The result of `job` before it is graded: its names, points and reference, no status yet.

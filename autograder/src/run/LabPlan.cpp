@@ -1,5 +1,7 @@
 #include "LabPlan.hpp"
 
+#include "LabSandbox.hpp"
+
 #include <stoa/core/InputError.hpp>
 
 #include <algorithm>
@@ -92,8 +94,14 @@ std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path
     return jobs;
 }
 
-RunSettings runSettings(const Options& options) {
+RunSettings runSettings(const Options& options, const std::filesystem::path& sourceDir,
+                        const std::filesystem::path& workDir) {
     RunSettings settings;
+    settings.sourceDir = sourceDir;
+    settings.files = labProgramBaseAccess(sourceDir, workDir);
+    settings.shaderCache = options.shaderCache.empty() ? userShaderCache() : options.shaderCache;
+    std::error_code ignored;
+    std::filesystem::create_directories(settings.shaderCache, ignored);   // Mesa could not make it, confined
     // Without --timeout, each case's limit comes from its recorded render time;
     // the 60 s here is for what runs outside gradeCases() (references, --info).
     settings.caseTimeouts = options.timeoutSeconds <= 0.0;

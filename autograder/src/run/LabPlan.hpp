@@ -52,7 +52,11 @@ std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path
                               const std::filesystem::path& sourceDir, const std::filesystem::path& workDir,
                               bool cascade = false);
 
-/// The limits and backend from the command line.
-RunSettings runSettings(const Options& options);
+/// The limits and backend from the command line, and the files the lab programs
+/// may touch (LabSandbox.hpp): `sourceDir`'s public folders to read, their case
+/// folders under `workDir` and the shader cache (--shader-cache, else Mesa's
+/// own for this user) to write.
+RunSettings runSettings(const Options& options, const std::filesystem::path& sourceDir,
+                        const std::filesystem::path& workDir);
 
 } // namespace stoa::grader
