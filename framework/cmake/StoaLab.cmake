@@ -283,6 +283,10 @@ function(_stoa_cascade_program lab uses)
   foreach(used IN LISTS uses)
     _stoa_student_objects(object ${used} "-solutions" ${STOA_SOLUTIONS_DIR})
     list(APPEND objects ${object})
+    # A submission build compiles these first, on their own (the target
+    # stoa_solution_objects): the student's files are then compiled where
+    # solutions/ cannot be read (stoa-grade-class, ClassGrader.cpp).
+    set_property(GLOBAL APPEND PROPERTY STOA_CASCADE_SOLUTION_OBJECTS ${object})
   endforeach()
   _stoa_student_objects(object ${lab} "" ${STOA_MAIN_TRACK_DIR})   # the main program's objects
   list(APPEND objects ${object})
@@ -295,6 +299,12 @@ endfunction()
 # "not attempted" instead of failing to configure.
 function(_stoa_stage_student_file lab file)
   set(from ${STOA_TRACK_DIR}/${lab}/${file})
+  if(IS_SYMLINK ${from})
+    # The grader's configure may read only the submission's own files.
+    file(READ_SYMLINK ${from} link_target)
+    message(FATAL_ERROR "error: the submission's ${lab}/${file} is a symbolic link (to ${link_target}); "
+                        "hand in the file itself")
+  endif()
   if(NOT EXISTS ${from})
     message(WARNING "the submission has no ${lab}/${file}; using the stub from labs/")
     set(from ${STOA_LABS_DIR}/${lab}/${file})

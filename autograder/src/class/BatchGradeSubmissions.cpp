@@ -1,12 +1,15 @@
 #include "BatchGradeSubmissions.hpp"
 
 #include "ChildProcess.hpp"
+#include "ReferenceGuard.hpp"
 
 #include <stoa/core/InputError.hpp>
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -47,7 +50,96 @@ ProcessLimits unpackLimits() {
     return limits;
 }
 
+// Copies `from` into `to` (which exists): folders and regular files, symbolic
+// links as links (never followed: a link to a classmate's file stays a link the
+// confined build cannot follow); sockets, pipes and devices are left out.
+void copyFolder(const std::filesystem::path& from, const std::filesystem::path& to, std::uintmax_t& bytes) {
+    for (const auto& entry : std::filesystem::directory_iterator(from)) {
+        const std::filesystem::path target = to / entry.path().filename();
+        const std::filesystem::file_status status = entry.symlink_status();
+        if (std::filesystem::is_symlink(status)) {
+            std::filesystem::copy_symlink(entry.path(), target);
+        } else if (std::filesystem::is_directory(status)) {
+            std::filesystem::create_directory(target);
+            copyFolder(entry.path(), target, bytes);
+        } else if (std::filesystem::is_regular_file(status)) {
+            bytes += entry.file_size();
+            if (bytes > kMaxSubmissionBytes)
+                throw InputError(from.string(), 0, "the submission holds more than " +
+                                                       std::to_string(kMaxSubmissionBytes >> 20) +
+                                                       " MiB; hand in the labs/ folder only");
+            std::filesystem::copy_file(entry.path(), target);
+        }
+    }
+}
+
+std::string readBytes(const std::filesystem::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << file.rdbuf();
+    return bytes.str();
+}
+
+InputFile recordFile(const std::filesystem::path& path, const std::string& name) {
+    InputFile input;
+    input.path = name;
+    std::error_code error;
+    std::string bytes = std::filesystem::is_symlink(std::filesystem::symlink_status(path, error))
+                            ? "link -> " + std::filesystem::read_symlink(path, error).string()
+                            : readBytes(path);
+    input.size = bytes.size();
+    input.hash = contentHash(bytes);
+    return input;
+}
+
 } // namespace
+
+std::vector<InputFile> recordInputs(const Submission& submission) {
+    std::vector<InputFile> inputs;
+    const std::filesystem::path root = std::filesystem::absolute(submission.source);
+    if (submission.kind != SubmissionKind::Folder) {
+        inputs.push_back(recordFile(root, ""));
+        return inputs;
+    }
+    std::error_code error;
+    for (auto entry = std::filesystem::recursive_directory_iterator(root, error);
+         !error && entry != std::filesystem::recursive_directory_iterator(); entry.increment(error)) {
+        const std::filesystem::file_status status = entry->symlink_status();
+        if (std::filesystem::is_regular_file(status) || std::filesystem::is_symlink(status))
+            inputs.push_back(recordFile(entry->path(), entry->path().lexically_relative(root).generic_string()));
+    }
+    std::sort(inputs.begin(), inputs.end(), [](const InputFile& a, const InputFile& b) { return a.path < b.path; });
+    return inputs;
+}
+
+std::vector<std::string> changedInputs(const std::vector<InputFile>& before, const std::vector<InputFile>& after) {
+    std::map<std::string, const InputFile*> earlier;
+    for (const InputFile& input : before) earlier[input.path] = &input;
+    std::vector<std::string> changed;
+    auto shown = [](const std::string& path) { return path.empty() ? std::string("(the archive)") : path; };
+    for (const InputFile& input : after) {
+        auto found = earlier.find(input.path);
+        if (found == earlier.end()) {
+            changed.push_back(shown(input.path) + " (new)");
+            continue;
+        }
+        if (!(*found->second == input)) changed.push_back(shown(input.path));
+        earlier.erase(found);
+    }
+    for (const auto& [path, input] : earlier) changed.push_back(shown(path) + " (gone)");
+    return changed;
+}
+
+std::string inputsText(const std::vector<InputFile>& inputs) {
+    std::string text;
+    char hash[17];
+    for (const InputFile& input : inputs) {
+        std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(input.hash));
+        text += std::string(hash) + "  " + std::to_string(input.size) + "  " +
+                (input.path.empty() ? "(the archive)" : input.path) + "\n";
+    }
+    return text;
+}
 
 std::string studentName(const std::filesystem::path& entry) {
     std::string name = entry.filename().string();
@@ -132,10 +224,14 @@ std::filesystem::path findOnPath(const std::string& program) {
 }
 
 std::filesystem::path stageSubmission(const Submission& submission, const std::filesystem::path& stageDir) {
-    if (submission.kind == SubmissionKind::Folder) return findLabsFolder(std::filesystem::absolute(submission.source));
-
     std::filesystem::remove_all(stageDir);
     std::filesystem::create_directories(stageDir);
+    if (submission.kind == SubmissionKind::Folder) {
+        std::uintmax_t bytes = 0;
+        copyFolder(std::filesystem::absolute(submission.source), stageDir, bytes);
+        return findLabsFolder(stageDir);
+    }
+
     std::string archive = std::filesystem::absolute(submission.source).string();
     std::vector<std::string> argv;
     if (submission.kind == SubmissionKind::Zip) {
@@ -148,7 +244,13 @@ std::filesystem::path stageSubmission(const Submission& submission, const std::f
         if (tar.empty()) throw InputError(archive, 0, "cannot unpack: 'tar' is not installed");
         argv = {tar.string(), "-xzf", archive, "-C", stageDir.string(), "--no-same-owner"};
     }
-    ProcessOutcome outcome = runProcess(argv, stageDir, unpackLimits());
+    ProcessLimits limits = unpackLimits();
+    // The archive tool writes only into the stage folder (an entry "../x" or a
+    // link out of it goes nowhere) and reads only the archive.
+    limits.files = systemFileAccess();
+    limits.files.readable.push_back(archive);
+    limits.files.writable.push_back(stageDir);
+    ProcessOutcome outcome = runProcess(argv, stageDir, limits);
     if (!outcome.exitedWith(0)) {
         std::string message = outcome.lastOutputLine();
         throw InputError(archive, 0,

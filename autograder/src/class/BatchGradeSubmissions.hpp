@@ -6,9 +6,13 @@
 //   submissions/carol.tar.gz      the same with tar (.tgz too)
 //
 // The student's name is the entry's name without the archive extension. Each
-// submission is staged into the student's output folder, where its labs/ tree
-// is found: at the root, or inside the one top folder an archive tool made.
+// submission is staged (copied or unpacked) into the student's output folder
+// before any student's code is built or run, and graded from that copy; its
+// labs/ tree is found there: at the root, or inside the one top folder an
+// archive tool made. The submission itself is only ever read, and a record of
+// its files' hashes shows that grading did not change it.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -38,10 +42,38 @@ std::string studentName(const std::filesystem::path& entry);
 /// it looked when there is none.
 std::filesystem::path findLabsFolder(const std::filesystem::path& root);
 
-/// Makes the submission's files available under `stageDir` (an archive is
-/// unpacked there; a folder is used where it is) and returns its labs/ folder.
-/// Throws InputError with the archive tool's message when unpacking fails.
+/// Copies the submission's files into `stageDir` (an archive is unpacked there,
+/// by tar or unzip confined to that folder; a folder is copied, its symbolic
+/// links as links, other special files left out) and returns the copy's labs/
+/// folder. Nothing of the student's is ever built or run from the submission
+/// itself. Throws InputError with the archive tool's message when unpacking
+/// fails, or when a folder holds more than kMaxSubmissionBytes.
 std::filesystem::path stageSubmission(const Submission& submission, const std::filesystem::path& stageDir);
+
+/// The most a submission folder may hold (256 MiB, as for an unpacked archive).
+constexpr std::uintmax_t kMaxSubmissionBytes = 256ull << 20;
+
+/// One input file of a submission as it was read: its path (relative to the
+/// submission; "" for an archive, which is one file), size and content hash.
+struct InputFile {
+    std::string path;
+    std::uintmax_t size = 0;
+    std::uint64_t hash = 0;
+    bool operator==(const InputFile& other) const {
+        return path == other.path && size == other.size && hash == other.hash;
+    }
+};
+
+/// Every file of the submission (a folder's files, links as their target's
+/// text; an archive: the archive), sorted by path, each with its hash.
+std::vector<InputFile> recordInputs(const Submission& submission);
+
+/// The paths that differ between two records of the same submission: changed,
+/// gone or new ("(the archive)" for an archive). Empty when none.
+std::vector<std::string> changedInputs(const std::vector<InputFile>& before, const std::vector<InputFile>& after);
+
+/// The record as text, one file a line: "<hash, 16 hex digits>  <size>  <path>".
+std::string inputsText(const std::vector<InputFile>& inputs);
 
 /// The full path of `program` found on $PATH; empty when it is not there.
 std::filesystem::path findOnPath(const std::string& program);

@@ -6,6 +6,7 @@
 #include "Grader.hpp"
 #include "JsonWriter.hpp"
 #include "LabCatalog.hpp"
+#include "LabSandbox.hpp"
 #include "RenderTimes.hpp"
 #include "Report.hpp"
 #include "ReportFile.hpp"
@@ -26,10 +27,15 @@ namespace {
 
 constexpr std::size_t kNoteLength = 200;       // one note in the gradebook
 constexpr std::size_t kMessageLength = 2000;   // the compiler's message in results.json
+constexpr std::uintmax_t kMaxSeededShaderCacheBytes = 64ull << 20;   // a larger user cache is not copied
 
-// Builds run the student's code through the compiler only; a wall clock is enough.
-ProcessLimits buildLimits(std::size_t outputBytes) {
+// Builds run the student's code through the compiler only; a wall clock is
+// enough. `files` is what the step may touch; its temporary files go in
+// <build>/tmp (`buildDir` empty: the grader's TMPDIR).
+ProcessLimits buildLimits(std::size_t outputBytes, const FileAccess& files, const std::filesystem::path& buildDir) {
     ProcessLimits limits;
+    limits.files = files;
+    if (!buildDir.empty()) limits.environment.push_back("TMPDIR=" + (buildDir / "tmp").string());
     limits.timeoutSeconds = 900.0;
     limits.cpuSeconds = 0;
     limits.addressSpaceBytes = 0;
@@ -106,9 +112,31 @@ std::string firstError(const std::string& message) {
         if (line.find("error") == std::string::npos) continue;
         std::size_t track = line.find("/track/");
         if (track != std::string::npos) line = line.substr(track + 7);
+        // The build's sandbox refused a file: say what it may read.
+        if (line.find("Permission denied") != std::string::npos)
+            line = "reads a file outside the submission, which the grader's build may not (only the "
+                   "student's own files and the framework): " + line;
         return truncated(oneLine(line), kNoteLength);
     }
     return truncated(oneLine(message), kNoteLength);
+}
+
+// The student's own Mesa shader cache (a classmate's lab programs must not be
+// able to plant compiled shaders in it), started as a copy of this user's, so
+// that the shaders every lab shares are not compiled again for each student.
+std::filesystem::path seedShaderCache(const std::filesystem::path& studentDir) {
+    std::filesystem::path cache = studentDir / "shader-cache";
+    std::error_code error;
+    if (std::filesystem::exists(cache, error)) return cache;
+    std::filesystem::path user = userShaderCache();
+    std::uintmax_t bytes = 0;
+    for (auto entry = std::filesystem::recursive_directory_iterator(user, error);
+         !error && entry != std::filesystem::recursive_directory_iterator(); entry.increment(error))
+        if (entry->is_regular_file(error)) bytes += entry->file_size(error);
+    if (!error && bytes > 0 && bytes <= kMaxSeededShaderCacheBytes)
+        std::filesystem::copy(user, cache, std::filesystem::copy_options::recursive, error);
+    std::filesystem::create_directories(cache, error);
+    return cache;
 }
 
 double manifestPoints(const std::filesystem::path& manifest) {
@@ -290,8 +318,38 @@ void addResults(const std::filesystem::path& resultsJson, StudentGrade& grade) {
     }
 }
 
-StudentGrade gradeSubmission(const Submission& submission, const Framework& framework, const ClassOptions& options,
+StagedSubmission stageForGrading(const Submission& submission, const ClassOptions& options) {
+    StagedSubmission staged;
+    staged.submission = submission;
+    std::filesystem::path studentDir = std::filesystem::absolute(options.outDir / submission.student);
+    try {
+        std::filesystem::create_directories(studentDir);
+        staged.inputs = recordInputs(submission);
+        writeText(studentDir / "submission-files.txt", inputsText(staged.inputs));
+        staged.labsDir = stageSubmission(submission, studentDir / "submission");
+    } catch (const std::exception& error) {
+        staged.labsDir.clear();
+        staged.error = truncated(oneLine(error.what()), kNoteLength);
+    }
+    return staged;
+}
+
+FileAccess buildAccess(const Framework& framework, const ClassOptions& options, const std::filesystem::path& studentDir,
+                       bool readSolutions, const std::filesystem::path& stagedLabs) {
+    FileAccess access = systemFileAccess();
+    access.readable.push_back(framework.sourceDir);
+    access.readable.push_back(framework.buildDir);
+    if (!stagedLabs.empty()) access.readable.push_back(stagedLabs);
+    access.writable.push_back(studentDir / "build");
+    access.excluded.push_back(std::filesystem::absolute(options.outDir));
+    access.excluded.push_back(std::filesystem::absolute(options.submissionsDir));
+    if (!readSolutions) access.excluded.push_back(framework.sourceDir / "solutions");
+    return access;
+}
+
+StudentGrade gradeSubmission(const StagedSubmission& staged, const Framework& framework, const ClassOptions& options,
                              const std::function<void(const std::string&)>& progress) {
+    const Submission& submission = staged.submission;
     StudentGrade grade;
     grade.student = submission.student;
     for (const std::string& lab : framework.labs) grade.labs[lab].maxPoints = framework.labMaxPoints.at(lab);
@@ -309,25 +367,21 @@ StudentGrade gradeSubmission(const Submission& submission, const Framework& fram
     std::filesystem::path studentDir = std::filesystem::absolute(options.outDir / submission.student);
     std::filesystem::path buildDir = studentDir / "build";
     try {
-        std::filesystem::create_directories(studentDir);
         std::filesystem::remove(studentDir / "results.json");
         std::filesystem::remove(studentDir / "report.html");
-
-        progress("unpacking...");
-        std::filesystem::path labsDir;
-        try {
-            labsDir = stageSubmission(submission, studentDir / "submission");
-        } catch (const InputError& error) {
-            grade.notes.push_back(truncated(oneLine(error.what()), kNoteLength));
+        if (staged.labsDir.empty()) {
+            grade.notes.push_back(staged.error);
             return finish("no labs/ folder");
         }
+        const std::filesystem::path& labsDir = staged.labsDir;
+        std::filesystem::create_directories(buildDir / "tmp");
 
         progress("configuring...");
         ProcessOutcome configure = runProcess(
             {framework.cmake.string(), "-S", (framework.sourceDir / "autograder" / "submission").string(), "-B",
              buildDir.string(), "-DStoa_DIR=" + (framework.buildDir / "stoa-config").string(),
              "-DSTOA_TRACK_DIR=" + labsDir.string()},
-            studentDir, buildLimits(16384));
+            studentDir, buildLimits(16384, buildAccess(framework, options, studentDir, false, labsDir), buildDir));
         writeText(studentDir / "configure.log", configure.output);
         if (std::string note = strayNote("configure", configure); !note.empty()) grade.notes.push_back(note);
         if (!configure.exitedWith(0)) {
@@ -336,19 +390,32 @@ StudentGrade gradeSubmission(const Submission& submission, const Framework& fram
             return finish("configure failed");
         }
 
+        // The solutions the cascade programs link, compiled before any of the
+        // student's files, where solutions/ may be read; no student file is
+        // compiled in this step.
+        progress("building the earlier labs' solutions for the cascades...");
+        ProcessOutcome solutions = runProcess(
+            {framework.cmake.string(), "--build", buildDir.string(), "--target", "stoa_solution_objects", "-j", "1"},
+            studentDir, buildLimits(32768, buildAccess(framework, options, studentDir, true), buildDir));
+        writeText(studentDir / "build-solutions.log", solutions.output);
+        if (!solutions.exitedWith(0))
+            grade.notes.push_back("the earlier labs' solutions did not build (" + solutions.describe() +
+                                  "); see build-solutions.log");
+
+        const ProcessLimits labBuild = buildLimits(32768, buildAccess(framework, options, studentDir, false), buildDir);
         std::map<std::string, std::string> buildErrors;
         std::vector<std::string> built;
         for (const std::string& lab : framework.labs) {
             progress("building " + lab + "...");
-            ProcessOutcome build =
-                runProcess({framework.cmake.string(), "--build", buildDir.string(), "--target", lab, "-j", "1"},
-                           studentDir, buildLimits(32768));
+            ProcessOutcome build = runProcess(
+                {framework.cmake.string(), "--build", buildDir.string(), "--target", lab, "-j", "1"}, studentDir,
+                labBuild);
             writeText(studentDir / ("build-" + lab + ".log"), build.output);
             // The cascade program (Cascade.hpp), where the lab uses earlier labs
             // and solutions exist; a lab without one just has no such target.
             ProcessOutcome cascade = runProcess(
                 {framework.cmake.string(), "--build", buildDir.string(), "--target", lab + "-cascade", "-j", "1"},
-                studentDir, buildLimits(32768));
+                studentDir, labBuild);
             for (const std::string& note : {strayNote("the build of " + lab, build),
                                             strayNote("the cascade build of " + lab, cascade)})
                 if (!note.empty()) grade.notes.push_back(note);
@@ -367,7 +434,8 @@ StudentGrade gradeSubmission(const Submission& submission, const Framework& fram
             std::vector<std::string> argv = {framework.gradeProgram.string(),
                                              "--bin-dir", (buildDir / "bin").string(),
                                              "--json", (studentDir / "results.json").string(),
-                                             "--work-dir", (studentDir / "work").string()};
+                                             "--work-dir", (studentDir / "work").string(),
+                                             "--shader-cache", seedShaderCache(studentDir).string()};
             if (options.timeoutSeconds > 0.0) {
                 argv.push_back("--timeout");
                 argv.push_back(std::to_string(options.timeoutSeconds));
@@ -380,7 +448,7 @@ StudentGrade gradeSubmission(const Submission& submission, const Framework& fram
                 argv.push_back("--html");
                 argv.push_back((studentDir / "report.html").string());
             }
-            ProcessLimits limits = buildLimits(65536);
+            ProcessLimits limits = buildLimits(65536, FileAccess{}, {});   // stoa-grade confines its lab programs
             // Every case of every lab (and its cascade run) at its full limit, and then some.
             double perCase = options.timeoutSeconds > 0.0 ? options.timeoutSeconds : kUnrecordedTimeoutSeconds * 4.0;
             limits.timeoutSeconds = 60.0 + perCase * 4.0 * 64;
@@ -449,6 +517,13 @@ int runClassGrade(const ClassOptions& options, const Framework& framework, std::
 
     std::mutex printing;
     std::size_t total = submissions.size();
+    // Every submission is copied before any student's code is built or run.
+    out << "staging " << total << " submissions into " << options.outDir.string() << "/STUDENT/submission"
+        << std::endl;
+    std::vector<StagedSubmission> staged(total);
+    forEachInParallel(total, options.jobs, [&](std::size_t i) { staged[i] = stageForGrading(submissions[i], options); });
+    if (std::string note = fileConfinementNote(); !note.empty()) err << "stoa-grade-class: " << note << "\n";
+
     std::size_t finished = 0;
     std::vector<StudentGrade> grades(total);
     forEachInParallel(total, options.jobs, [&](std::size_t i) {
@@ -457,7 +532,7 @@ int runClassGrade(const ClassOptions& options, const Framework& framework, std::
             std::lock_guard<std::mutex> lock(printing);
             out << "[" << (i + 1) << "/" << total << "] " << submission.student << ": " << what << std::endl;
         };
-        grades[i] = gradeSubmission(submission, framework, options, say);
+        grades[i] = gradeSubmission(staged[i], framework, options, say);
         std::lock_guard<std::mutex> lock(printing);
         ++finished;
         out << "[" << (i + 1) << "/" << total << "] " << submission.student << ": " << grades[i].status << " "
@@ -469,6 +544,18 @@ int runClassGrade(const ClassOptions& options, const Framework& framework, std::
     // Every step killed what it left; this is the last look before the gradebook.
     if (std::size_t strays = killStrayProcesses())
         err << "stoa-grade-class: killed " << strays << " more processes the submissions had left running\n";
+    // Grading only ever reads a submission: a change here means something got past the sandbox.
+    for (std::size_t i = 0; i < total; ++i) {
+        if (staged[i].inputs.empty()) continue;
+        std::vector<std::string> changed = changedInputs(staged[i].inputs, recordInputs(submissions[i]));
+        if (changed.empty()) continue;
+        std::string list;
+        for (const std::string& path : changed) list += (list.empty() ? "" : ", ") + path;
+        grades[i].notes.push_back(truncated("the submission changed during grading (it was graded as it was "
+                                            "before): " + list, kNoteLength));
+        err << "stoa-grade-class: " << submissions[i].student << "'s submission changed during grading: " << list
+            << "\n";
+    }
     std::filesystem::path gradebook = options.outDir / "gradebook.csv";
     writeReportFile(gradebook, gradebookCsv(framework.labs, grades), "the gradebook");
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

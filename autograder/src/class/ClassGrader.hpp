@@ -1,19 +1,25 @@
 #pragma once
 // stoa-grade-class: grades a folder of submissions against a prebuilt framework.
 //
-// For each student, on up to `jobs` students at once:
-//   1. stage     unpack the archive (or use the folder) and find its labs/ tree;
-//   2. configure cmake -S autograder/submission -B <out>/<student>/build
+// First every submission is staged: its files' hashes recorded, then copied (or
+// unpacked) into <out>/<student>/submission, before any student's code runs.
+// Then for each student, on up to `jobs` students at once, from the staged copy
+// (each step confined to that student's files and the framework, FileSandbox.hpp):
+//   1. configure cmake -S autograder/submission -B <out>/<student>/build
 //                      -DStoa_DIR=<framework build>/stoa-config -DSTOA_TRACK_DIR=<its labs/>
 //                (only the student files each lab declares are taken from it);
-//   3. build     one lab at a time, so a compile error fails that lab (and the
-//                labs that use its code) with the compiler's message, not the batch;
-//   4. grade     the framework's stoa-grade on the student's programs: results.json
+//   2. build     the earlier labs' solutions the cascades link (stoa_solution_objects),
+//                where solutions/ may be read; then one lab at a time, where it may
+//                not, so a compile error fails that lab (and the labs that use its
+//                code) with the compiler's message, not the batch;
+//   3. grade     the framework's stoa-grade on the student's programs: results.json
 //                (and report.html where stoa-grade has --html) in <out>/<student>/.
-// Then <out>/gradebook.csv: one row per student with points per lab, total, max,
-// status and notes.
+// Then every submission's files are hashed again (a change is noted: it must never
+// happen), and <out>/gradebook.csv gets one row per student with points per lab,
+// total, max, status and notes.
 
 #include "BatchGradeSubmissions.hpp"
+#include "FileSandbox.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -67,11 +73,32 @@ struct StudentGrade {
     std::vector<std::string> notes;
 };
 
-/// Stages, builds and grades one submission into <outDir>/<student>/. Never throws:
-/// every failure becomes the student's status and notes. `progress` gets one-line
-/// updates ("building...", "grading...").
-StudentGrade gradeSubmission(const Submission& submission, const Framework& framework, const ClassOptions& options,
+/// A submission staged before any student's code is built or run: its copy's
+/// labs/ folder, or why there is none, and the record of its input files.
+struct StagedSubmission {
+    Submission submission;
+    std::filesystem::path labsDir;         // in <outDir>/<student>/submission; empty when staging failed
+    std::string error;                     // why it could not be staged
+    std::vector<InputFile> inputs;         // recorded before staging (<outDir>/<student>/submission-files.txt)
+};
+
+/// Records the submission's input files and copies (or unpacks) it into
+/// <outDir>/<student>/submission. Never throws.
+StagedSubmission stageForGrading(const Submission& submission, const ClassOptions& options);
+
+/// Builds and grades one staged submission in <outDir>/<student>/, each step
+/// confined to the student's own files and the framework (buildAccess()). Never
+/// throws: every failure becomes the student's status and notes. `progress` gets
+/// one-line updates ("building...", "grading...").
+StudentGrade gradeSubmission(const StagedSubmission& staged, const Framework& framework, const ClassOptions& options,
                              const std::function<void(const std::string&)>& progress);
+
+/// What a step of a student's build may touch: the system, the framework's tree
+/// and build (without the submissions, the grades folder and, unless
+/// `readSolutions`, solutions/), the student's build folder (to write), and for
+/// the configure step (`stagedLabs` not empty) the student's staged files.
+FileAccess buildAccess(const Framework& framework, const ClassOptions& options, const std::filesystem::path& studentDir,
+                       bool readSolutions, const std::filesystem::path& stagedLabs = {});
 
 /// Points per lab and overall from a results.json as stoa-grade writes it
 /// (tests named "<lab>/<case>" or tagged with the lab). Throws InputError when it does not parse.

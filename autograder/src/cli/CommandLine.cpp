@@ -9,7 +9,7 @@ namespace stoa::grader {
 namespace {
 
 const char* const kOptionList =
-    "--lab, --case, --bin-dir, --backend, --json, --html, --junit, --timeout, --jobs, --work-dir, --expect, "
+    "--lab, --case, --bin-dir, --backend, --json, --html, --junit, --timeout, --jobs, --work-dir, --shader-cache, --expect, "
     "--update-references, --check-mistakes, --check-hints, --determinism, --write-heatmap-legend, --help";
 
 double parsePositiveNumber(const std::string& option, const std::string& text) {
@@ -84,6 +84,8 @@ Options parseCommandLine(const std::vector<std::string>& arguments) {
             options.jobs = parseJobCount(takeValue("a number of cases to render at once"));
         } else if (option == "--work-dir") {
             options.workDir = takeValue("a folder for the rendered images");
+        } else if (option == "--shader-cache") {
+            options.shaderCache = takeValue("a folder for Mesa's shader cache");
         } else if (option == "--expect") {
             std::string status = takeValue("pass or not-attempted");
             if (status == "pass")
@@ -179,6 +181,8 @@ options:
                            cases of a program that has timed out once)
   --jobs N                 render N cases at once (default 1)
   --work-dir DIR           where rendered images and heat maps go (default: a new temp folder)
+  --shader-cache DIR       Mesa's shader cache for the lab programs (default: this user's);
+                           besides its case folder, the one folder a lab program may write
   --expect pass|not-attempted
                            exit 1 unless every graded case has that status
 

@@ -4,6 +4,7 @@
 #include "Grader.hpp"
 #include "Hints.hpp"
 #include "HtmlReport.hpp"
+#include "ProcessContainment.hpp"
 #include "JunitReport.hpp"
 #include "Report.hpp"
 #include "ResultsJson.hpp"
@@ -53,6 +54,9 @@ int runGrade(const Options& options, const Environment& env) {
     }
 
     std::filesystem::path workDir = makeWorkDir(options.workDir);
+    // Once, where the system cannot contain the lab programs as the guide says.
+    for (const std::string& note : std::vector<std::string>{networkIsolationNote(), fileConfinementNote()})
+        if (!note.empty()) env.err << note << std::endl;
     std::vector<CaseJob> jobs;
     std::map<std::string, std::vector<CaseJob>> cascadeJobs;
     for (const PlannedLab& lab : labs) {
