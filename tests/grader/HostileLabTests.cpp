@@ -8,17 +8,21 @@
 #include "GradeCommand.hpp"
 #include "Grader.hpp"
 #include "HostileJob.hpp"
+#include "FileSandbox.hpp"
 #include "LabPlan.hpp"
+#include "LabSandbox.hpp"
 #include "ProcessContainment.hpp"
 #include "TempFolder.hpp"
 
 #include <stoa/image/Image.hpp>
 
 #include <arpa/inet.h>
+#include <sched.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -181,6 +185,75 @@ TEST_CASE("hostile lab programs: each misdeed fails its case with a clear reason
     CHECK(after == before);
     // Nothing waited for the full timeout but the infinite loop (3 cases at once).
     CHECK(seconds < 20.0);
+}
+
+TEST_CASE("confined lab programs: a classmate's file, solutions/ and the grades stay out of reach",
+          "[grader][isolation]") {
+    if (!filesCanBeConfined()) {
+        WARN(fileConfinementNote());
+        return;
+    }
+    stoa::test::TempFolder folder("hostile-files");
+    const std::string classmateSource = "void secret() {}\n";
+    const std::string solution = "// the solution\n";
+    const std::string grades = "{\"score\": 3}\n";
+    std::filesystem::path classmate = folder.write("submissions/zzz_victim/labs/01_transforms/transforms.cpp",
+                                                   classmateSource);
+    std::filesystem::path tree = folder.path() / "stoa";
+    std::filesystem::path solutionFile = folder.write("stoa/solutions/01_transforms/transforms.cpp", solution);
+    std::filesystem::path resultsFile = folder.write("grades/aaa_mallory/results.json", grades);
+    setenv("STOA_HOSTILE_CLASSMATE", classmate.c_str(), 1);
+    setenv("STOA_HOSTILE_SOLUTIONS", solutionFile.c_str(), 1);
+    setenv("STOA_HOSTILE_RESULTS", resultsFile.c_str(), 1);
+
+    std::filesystem::path work = folder.path() / "grades" / "aaa_mallory" / "work";
+    std::filesystem::path references = folder.path() / "references" / "99_hostile";
+    std::vector<CaseJob> jobs;
+    for (const char* name : {"good", "read_classmate", "write_solutions", "write_grades", "see_grader"})
+        jobs.push_back(hostileJob(name, references, work));
+    RunSettings settings;
+    settings.limits = defaultLimits(10.0);
+    settings.sourceDir = tree;
+    settings.files = labProgramBaseAccess(tree, work);
+    std::vector<GradeResult> results = gradeCases(jobs, settings, 2);
+    std::map<std::string, GradeResult> byName;
+    for (const GradeResult& result : results) byName[result.caseName] = result;
+
+    using Catch::Matchers::Contains;
+    CHECK(byName["good"].status == GradeStatus::Passed);
+    for (const char* name : {"read_classmate", "write_solutions", "write_grades"}) {
+        INFO(name << ": " << statusName(byName[name].status) << ": " << byName[name].reason);
+        CHECK(byName[name].status == GradeStatus::Error);
+        CHECK_THAT(byName[name].reason, Contains("Permission denied"));
+    }
+    // With a PID and a mount namespace the program's /proc is its own.
+    if ((pidNamespaceFlags() & CLONE_NEWNS) != 0) {
+        INFO("see_grader: " << byName["see_grader"].reason);
+        CHECK(byName["see_grader"].status == GradeStatus::Error);
+        CHECK_THAT(byName["see_grader"].reason, Contains("not among the processes"));
+    }
+    CHECK(readAll(classmate) == classmateSource);
+    CHECK(readAll(solutionFile) == solution);
+    CHECK(readAll(resultsFile) == grades);
+    for (const char* name : {"STOA_HOSTILE_CLASSMATE", "STOA_HOSTILE_SOLUTIONS", "STOA_HOSTILE_RESULTS"})
+        unsetenv(name);
+}
+
+TEST_CASE("treeWithout grants a tree but the subtrees carved out of it", "[grader][isolation]") {
+    stoa::test::TempFolder folder("tree-without");
+    folder.write("build/bin/lab01", "x");
+    folder.write("build/class/alice/work/a.png", "x");
+    folder.write("build/class/bob/results.json", "x");
+    folder.write("build/CMakeCache.txt", "x");
+    std::filesystem::path root = std::filesystem::weakly_canonical(folder.path());
+    std::vector<std::filesystem::path> granted =
+        treeWithout(root / "build", {root / "build" / "class" / "alice", root / "nowhere"});
+    std::sort(granted.begin(), granted.end());
+    CHECK(granted == std::vector<std::filesystem::path>{root / "build" / "CMakeCache.txt", root / "build" / "bin",
+                                                        root / "build" / "class" / "bob"});
+    // Nothing carved below: the tree itself. An excluded folder around it does not remove it.
+    CHECK(treeWithout(root / "build" / "bin", {root / "build"}) ==
+          std::vector<std::filesystem::path>{root / "build" / "bin"});
 }
 
 TEST_CASE("printableText keeps text and replaces binary and control bytes", "[grader][isolation]") {

@@ -6,6 +6,11 @@
 //   STOA_HOSTILE_REFERENCES  a folder of reference images to overwrite
 //   STOA_HOSTILE_RESULTS     the results file to forge
 //   STOA_HOSTILE_PORT        a TCP port on 127.0.0.1 that the test listens on
+//   STOA_HOSTILE_CLASSMATE   a classmate's source file to read (read_classmate)
+//   STOA_HOSTILE_SOLUTIONS   a file in solutions/ to overwrite (write_solutions)
+// Those two, write_grades (STOA_HOSTILE_RESULTS) and see_grader (a process
+// named stoa-tests* in /proc) render the right picture only when they get
+// what they tried for; refused, they exit 1 saying what was refused.
 // The daemon cases (daemon_rewrite, daemon_refork, daemon_stealth, or any case
 // when STOA_HOSTILE_DAEMON names one of them) leave a process behind that, after
 // STOA_HOSTILE_DELAY seconds (default 1), overwrites with a perfect score every
@@ -30,6 +35,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <sstream>
 #include <string>
@@ -163,6 +169,46 @@ int forgeResults(const std::string& output) {
     return 0;
 }
 
+// Reads or overwrites `path`: on success the right picture (the case passes, so
+// a test sees the breach); refused, exit 1 with the system's reason.
+int touchFile(const char* variable, bool write, const std::string& output) {
+    const std::string path = environment(variable);
+    errno = 0;
+    if (write) {
+        std::ofstream file(path, std::ios::binary | std::ios::trunc);
+        if (file << "#error overwritten by a classmate\n" && file.flush()) {
+            gradient(16, 16).savePng(output);
+            return 0;
+        }
+    } else {
+        std::ifstream file(path, std::ios::binary);
+        std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+        if (file.is_open()) {
+            std::printf("read %zu bytes of %s\n", text.size(), path.c_str());
+            gradient(16, 16).savePng(output);
+            return 0;
+        }
+    }
+    std::printf("hostile_lab: cannot %s %s: %s\n", write ? "write" : "read", path.c_str(), std::strerror(errno));
+    return 1;
+}
+
+// Looks for the grader (the test program, stoa-tests*) among the processes in /proc.
+int seeGrader(const std::string& output) {
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator("/proc", error)) {
+        std::string comm = readFile((entry.path() / "comm").string());
+        std::string cmdline = readFile((entry.path() / "cmdline").string());
+        if (comm.rfind("stoa-tests", 0) == 0 || cmdline.find("stoa-tests") != std::string::npos) {
+            std::printf("saw the grader: process %s\n", entry.path().filename().c_str());
+            gradient(16, 16).savePng(output);
+            return 0;
+        }
+    }
+    std::printf("hostile_lab: the grader is not among the processes in /proc\n");
+    return 1;
+}
+
 int useNetwork(const std::string& output) {
     int fd = socket(AF_INET, SOCK_STREAM, 0);
     if (fd < 0) {
@@ -273,6 +319,10 @@ int main(int argc, char** argv) {
     if (name == "garbage_output") return garbage();
     if (name == "gl_error") return glError(output);
     if (name == "network") return useNetwork(output);
+    if (name == "read_classmate") return touchFile("STOA_HOSTILE_CLASSMATE", false, output);
+    if (name == "write_solutions") return touchFile("STOA_HOSTILE_SOLUTIONS", true, output);
+    if (name == "write_grades") return touchFile("STOA_HOSTILE_RESULTS", true, output);
+    if (name == "see_grader") return seeGrader(output);
     std::fprintf(stderr, "hostile_lab: no behaviour for case '%s'\n", name.c_str());
     return 2;
 }

@@ -347,6 +347,78 @@ FileAccess buildAccess(const Framework& framework, const ClassOptions& options, 
     return access;
 }
 
+namespace {
+
+// Builds the earlier labs' solutions for the cascades, then each lab and its
+// cascade program on its own; records in `grade` what built and returns the
+// compiler's message for each lab that did not.
+std::map<std::string, std::string> buildEachLab(const Framework& framework, const ClassOptions& options,
+                                                const std::filesystem::path& studentDir, StudentGrade& grade,
+                                                const std::function<void(const std::string&)>& progress) {
+    const std::filesystem::path buildDir = studentDir / "build";
+    // The solutions the cascade programs link, compiled before any of the
+    // student's files, where solutions/ may be read; no student file is
+    // compiled in this step.
+    progress("building the earlier labs' solutions for the cascades...");
+    ProcessOutcome solutions = runProcess(
+        {framework.cmake.string(), "--build", buildDir.string(), "--target", "stoa_solution_objects", "-j", "1"},
+        studentDir, buildLimits(32768, buildAccess(framework, options, studentDir, true), buildDir));
+    writeText(studentDir / "build-solutions.log", solutions.output);
+    if (!solutions.exitedWith(0))
+        grade.notes.push_back("the earlier labs' solutions did not build (" + solutions.describe() +
+                              "); see build-solutions.log");
+
+    const ProcessLimits labBuild = buildLimits(32768, buildAccess(framework, options, studentDir, false), buildDir);
+    std::map<std::string, std::string> buildErrors;
+    for (const std::string& lab : framework.labs) {
+        progress("building " + lab + "...");
+        ProcessOutcome build = runProcess(
+            {framework.cmake.string(), "--build", buildDir.string(), "--target", lab, "-j", "1"}, studentDir, labBuild);
+        writeText(studentDir / ("build-" + lab + ".log"), build.output);
+        // The cascade program (Cascade.hpp), where the lab uses earlier labs
+        // and solutions exist; a lab without one just has no such target.
+        ProcessOutcome cascade = runProcess(
+            {framework.cmake.string(), "--build", buildDir.string(), "--target", lab + "-cascade", "-j", "1"},
+            studentDir, labBuild);
+        for (const std::string& note :
+             {strayNote("the build of " + lab, build), strayNote("the cascade build of " + lab, cascade)})
+            if (!note.empty()) grade.notes.push_back(note);
+        LabGrade& labGrade = grade.labs[lab];
+        labGrade.built = build.exitedWith(0);
+        labGrade.cascadeBuilt = cascade.exitedWith(0);
+        if (!labGrade.built) {
+            buildErrors[lab] = withoutPrefix(compilerMessage(build.output), (buildDir / "track").string() + "/");
+            labGrade.note = "does not compile: " + firstError(buildErrors[lab]);
+        }
+    }
+    return buildErrors;
+}
+
+// stoa-grade's command line for the student's built labs.
+std::vector<std::string> gradeArguments(const Framework& framework, const ClassOptions& options,
+                                        const std::filesystem::path& studentDir, const std::vector<std::string>& built) {
+    std::vector<std::string> argv = {framework.gradeProgram.string(),
+                                     "--bin-dir", (studentDir / "build" / "bin").string(),
+                                     "--json", (studentDir / "results.json").string(),
+                                     "--work-dir", (studentDir / "work").string(),
+                                     "--shader-cache", seedShaderCache(studentDir).string()};
+    if (options.timeoutSeconds > 0.0) {
+        argv.push_back("--timeout");
+        argv.push_back(std::to_string(options.timeoutSeconds));
+    }
+    for (const std::string& lab : built) {
+        argv.push_back("--lab");
+        argv.push_back(lab);
+    }
+    if (framework.gradeWritesHtml) {
+        argv.push_back("--html");
+        argv.push_back((studentDir / "report.html").string());
+    }
+    return argv;
+}
+
+} // namespace
+
 StudentGrade gradeSubmission(const StagedSubmission& staged, const Framework& framework, const ClassOptions& options,
                              const std::function<void(const std::string&)>& progress) {
     const Submission& submission = staged.submission;
@@ -390,64 +462,14 @@ StudentGrade gradeSubmission(const StagedSubmission& staged, const Framework& fr
             return finish("configure failed");
         }
 
-        // The solutions the cascade programs link, compiled before any of the
-        // student's files, where solutions/ may be read; no student file is
-        // compiled in this step.
-        progress("building the earlier labs' solutions for the cascades...");
-        ProcessOutcome solutions = runProcess(
-            {framework.cmake.string(), "--build", buildDir.string(), "--target", "stoa_solution_objects", "-j", "1"},
-            studentDir, buildLimits(32768, buildAccess(framework, options, studentDir, true), buildDir));
-        writeText(studentDir / "build-solutions.log", solutions.output);
-        if (!solutions.exitedWith(0))
-            grade.notes.push_back("the earlier labs' solutions did not build (" + solutions.describe() +
-                                  "); see build-solutions.log");
-
-        const ProcessLimits labBuild = buildLimits(32768, buildAccess(framework, options, studentDir, false), buildDir);
-        std::map<std::string, std::string> buildErrors;
+        std::map<std::string, std::string> buildErrors = buildEachLab(framework, options, studentDir, grade, progress);
         std::vector<std::string> built;
-        for (const std::string& lab : framework.labs) {
-            progress("building " + lab + "...");
-            ProcessOutcome build = runProcess(
-                {framework.cmake.string(), "--build", buildDir.string(), "--target", lab, "-j", "1"}, studentDir,
-                labBuild);
-            writeText(studentDir / ("build-" + lab + ".log"), build.output);
-            // The cascade program (Cascade.hpp), where the lab uses earlier labs
-            // and solutions exist; a lab without one just has no such target.
-            ProcessOutcome cascade = runProcess(
-                {framework.cmake.string(), "--build", buildDir.string(), "--target", lab + "-cascade", "-j", "1"},
-                studentDir, labBuild);
-            for (const std::string& note : {strayNote("the build of " + lab, build),
-                                            strayNote("the cascade build of " + lab, cascade)})
-                if (!note.empty()) grade.notes.push_back(note);
-            LabGrade& labGrade = grade.labs[lab];
-            labGrade.built = build.exitedWith(0);
-            labGrade.cascadeBuilt = cascade.exitedWith(0);
-            if (labGrade.built || labGrade.cascadeBuilt) built.push_back(lab);
-            if (!labGrade.built) {
-                buildErrors[lab] = withoutPrefix(compilerMessage(build.output), (buildDir / "track").string() + "/");
-                labGrade.note = "does not compile: " + firstError(buildErrors[lab]);
-            }
-        }
+        for (const std::string& lab : framework.labs)
+            if (grade.labs[lab].built || grade.labs[lab].cascadeBuilt) built.push_back(lab);
 
         if (!built.empty()) {
             progress("grading...");
-            std::vector<std::string> argv = {framework.gradeProgram.string(),
-                                             "--bin-dir", (buildDir / "bin").string(),
-                                             "--json", (studentDir / "results.json").string(),
-                                             "--work-dir", (studentDir / "work").string(),
-                                             "--shader-cache", seedShaderCache(studentDir).string()};
-            if (options.timeoutSeconds > 0.0) {
-                argv.push_back("--timeout");
-                argv.push_back(std::to_string(options.timeoutSeconds));
-            }
-            for (const std::string& lab : built) {
-                argv.push_back("--lab");
-                argv.push_back(lab);
-            }
-            if (framework.gradeWritesHtml) {
-                argv.push_back("--html");
-                argv.push_back((studentDir / "report.html").string());
-            }
+            std::vector<std::string> argv = gradeArguments(framework, options, studentDir, built);
             ProcessLimits limits = buildLimits(65536, FileAccess{}, {});   // stoa-grade confines its lab programs
             // Every case of every lab (and its cascade run) at its full limit, and then some.
             double perCase = options.timeoutSeconds > 0.0 ? options.timeoutSeconds : kUnrecordedTimeoutSeconds * 4.0;
