@@ -112,10 +112,20 @@ std::string firstError(const std::string& message) {
         if (line.find("error") == std::string::npos) continue;
         std::size_t track = line.find("/track/");
         if (track != std::string::npos) line = line.substr(track + 7);
-        // The build's sandbox refused a file: say what it may read.
-        if (line.find("Permission denied") != std::string::npos)
-            line = "reads a file outside the submission, which the grader's build may not (only the "
-                   "student's own files and the framework): " + line;
+        // The build's sandbox refused a file: "cameras.cpp:1:10: fatal error: /a/b/c/d/e.cpp:
+        // Permission denied" -> "cameras.cpp:1:10: cannot read .../c/d/e.cpp (Permission denied): ...".
+        const std::string denied = ": Permission denied";
+        std::size_t fatal = line.find("fatal error: ");
+        if (fatal != std::string::npos && line.size() > denied.size() &&
+            line.compare(line.size() - denied.size(), denied.size(), denied) == 0) {
+            std::filesystem::path file = line.substr(fatal + 13, line.size() - denied.size() - fatal - 13);
+            std::filesystem::path shown = file.filename();
+            for (std::filesystem::path up = file.parent_path(); shown.string().size() < 48 && up.has_filename();
+                 up = up.parent_path())
+                shown = up.filename() / shown;
+            line = line.substr(0, fatal) + "cannot read .../" + shown.string() +
+                   " (Permission denied): the grader's build reads only the student's own files and the framework";
+        }
         return truncated(oneLine(line), kNoteLength);
     }
     return truncated(oneLine(message), kNoteLength);
