@@ -283,11 +283,15 @@ function(_stoa_cascade_program lab uses)
   foreach(used IN LISTS uses)
     _stoa_student_objects(object ${used} "-solutions" ${STOA_SOLUTIONS_DIR})
     list(APPEND objects ${object})
-    # A submission build compiles these first, on their own (the target
-    # stoa_solution_objects): the student's files are then compiled where
-    # solutions/ cannot be read (stoa-grade-class, ClassGrader.cpp).
-    set_property(GLOBAL APPEND PROPERTY STOA_CASCADE_SOLUTION_OBJECTS ${object})
   endforeach()
+  # The earlier labs' solutions alone, as a target of their own: stoa-grade-class
+  # builds it first, where solutions/ may be read, and then the student's files
+  # where it may not, so that a student's file cannot #include a solution
+  # (ClassGrader.cpp).
+  add_custom_target(${lab}-cascade-solutions)
+  if(objects)
+    add_dependencies(${lab}-cascade-solutions ${objects})
+  endif()
   _stoa_student_objects(object ${lab} "" ${STOA_MAIN_TRACK_DIR})   # the main program's objects
   list(APPEND objects ${object})
   _stoa_lab_program(${lab} ${lab}-cascade ${CMAKE_BINARY_DIR}/bin/cascade cascade

@@ -8,7 +8,7 @@
 //   1. configure cmake -S autograder/submission -B <out>/<student>/build
 //                      -DStoa_DIR=<framework build>/stoa-config -DSTOA_TRACK_DIR=<its labs/>
 //                (only the student files each lab declares are taken from it);
-//   2. build     the earlier labs' solutions the cascades link (stoa_solution_objects),
+//   2. build     the earlier labs' solutions the cascades link (NN_name-cascade-solutions),
 //                where solutions/ may be read; then one lab at a time, where it may
 //                not, so a compile error fails that lab (and the labs that use its
 //                code) with the compiler's message, not the batch;
