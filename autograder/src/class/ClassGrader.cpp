@@ -414,7 +414,9 @@ std::vector<std::string> gradeArguments(const Framework& framework, const ClassO
                                      "--bin-dir", (studentDir / "build" / "bin").string(),
                                      "--json", (studentDir / "results.json").string(),
                                      "--work-dir", (studentDir / "work").string(),
-                                     "--shader-cache", seedShaderCache(studentDir).string()};
+                                     "--shader-cache", seedShaderCache(studentDir).string(),
+                                     "--private", std::filesystem::absolute(options.outDir).string(),
+                                     "--private", std::filesystem::absolute(options.submissionsDir).string()};
     if (options.timeoutSeconds > 0.0) {
         argv.push_back("--timeout");
         argv.push_back(std::to_string(options.timeoutSeconds));

@@ -9,7 +9,7 @@ namespace stoa::grader {
 namespace {
 
 const char* const kOptionList =
-    "--lab, --case, --bin-dir, --backend, --json, --html, --junit, --timeout, --jobs, --work-dir, --shader-cache, --expect, "
+    "--lab, --case, --bin-dir, --backend, --json, --html, --junit, --timeout, --jobs, --work-dir, --shader-cache, --private, --expect, "
     "--update-references, --check-mistakes, --check-hints, --determinism, --write-heatmap-legend, --help";
 
 double parsePositiveNumber(const std::string& option, const std::string& text) {
@@ -86,6 +86,8 @@ Options parseCommandLine(const std::vector<std::string>& arguments) {
             options.workDir = takeValue("a folder for the rendered images");
         } else if (option == "--shader-cache") {
             options.shaderCache = takeValue("a folder for Mesa's shader cache");
+        } else if (option == "--private") {
+            options.privateDirs.push_back(takeValue("a folder the lab programs may not see"));
         } else if (option == "--expect") {
             std::string status = takeValue("pass or not-attempted");
             if (status == "pass")
@@ -183,6 +185,8 @@ options:
   --work-dir DIR           where rendered images and heat maps go (default: a new temp folder)
   --shader-cache DIR       Mesa's shader cache for the lab programs (default: this user's);
                            besides its case folder, the one folder a lab program may write
+  --private DIR            a folder the lab programs may not read (repeatable; stoa-grade-class
+                           names the submissions and the grades)
   --expect pass|not-attempted
                            exit 1 unless every graded case has that status
 

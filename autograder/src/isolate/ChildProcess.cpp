@@ -224,6 +224,10 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
         return outcome;
     }
     setup.fileSandbox = sandbox.descriptor();
+    // Without Landlock, mounts stand in, in the child's own mount namespace only.
+    const bool mountsInstead = limits.files.confine && !sandbox.valid() && (setup.unshareFlags & CLONE_NEWNS) != 0;
+    MountSandbox mounts(mountsInstead ? limits.files : FileAccess{});
+    if (mounts.valid()) setup.mountSandbox = &mounts;
     setup.graderArguments = program_invocation_name;
     setup.graderArgumentsLength = program_invocation_name ? graderArgumentsLength() : 0;
     const bool ownPids = (setup.unshareFlags & CLONE_NEWPID) != 0;

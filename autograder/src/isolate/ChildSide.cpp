@@ -32,11 +32,17 @@ void writeProcFile(const char* path, const std::string& text) {
 // sandbox) and errno through `errorFd`.
 [[noreturn]] void execProgram(const ChildSetup& setup, int errorFd) {
     int failure[2] = {0, 0};
-    if (!setup.workDir.empty() && chdir(setup.workDir.c_str()) != 0) {
+    // The mounts first: a work folder entered before them would still be the
+    // one on the read-only mount below the bind that makes it writable.
+    int confined = setup.mountSandbox ? setup.mountSandbox->enter() : 0;
+    if (confined != 0) {
+        failure[0] = 2;
+        failure[1] = confined;
+    } else if (!setup.workDir.empty() && chdir(setup.workDir.c_str()) != 0) {
         failure[1] = errno;
     } else {
         for (const ChildSetup::Limit& limit : setup.limits) setrlimit(limit.resource, &limit.value);
-        int confined = setup.fileSandbox >= 0 ? enterFileSandbox(setup.fileSandbox) : 0;
+        confined = setup.fileSandbox >= 0 ? enterFileSandbox(setup.fileSandbox) : 0;
         if (confined != 0) {
             failure[0] = 2;
             failure[1] = confined;

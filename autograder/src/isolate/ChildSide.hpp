@@ -4,6 +4,8 @@
 // calls run after fork: the grader has other threads, one of which may hold
 // malloc's lock at that moment.
 
+#include "MountSandbox.hpp"
+
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -25,6 +27,7 @@ struct ChildSetup {
     std::string workDir;
     int unshareFlags = 0;
     int fileSandbox = -1;   // a Landlock ruleset (FileSandbox.hpp) entered right before exec; -1: none
+    const MountSandbox* mountSandbox = nullptr;   // or, without Landlock, mounts made before exec (CLONE_NEWNS only)
     // The grader's own command line in memory (argv[0] on, its length): a PID
     // namespace's process 1 is a copy of the grader and blanks it, so that the
     // program cannot read the grader's paths from /proc/1/cmdline.

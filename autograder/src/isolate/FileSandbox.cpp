@@ -1,5 +1,7 @@
 #include "FileSandbox.hpp"
 
+#include "ProcessContainment.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
@@ -8,6 +10,7 @@
 
 #include <fcntl.h>
 #include <linux/landlock.h>
+#include <sched.h>
 #include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
@@ -138,13 +141,17 @@ int landlockAbi() {
 
 std::string fileConfinementNote() {
     if (filesCanBeConfined()) return "";
-    return "note: this system cannot confine the lab programs' files (Landlock, Linux 5.13 or newer, is not "
-           "available): they can read and write what this user can";
+    if (pidNamespaceFlags() & CLONE_NEWNS)
+        return "note: Landlock (Linux 5.13 or newer) is not available: the lab programs' files are confined with a "
+               "mount namespace instead (they write only their case folder and do not see solutions/, the "
+               "submissions or the grades, but can read this user's other files)";
+    return "note: this system cannot confine the lab programs' files (neither Landlock, Linux 5.13 or newer, nor a "
+           "mount namespace is available): they can read and write what this user can";
 }
 
 FileSandbox::FileSandbox(const FileAccess& access) {
     const int abi = landlockAbi();
-    if (!access.confine || abi == 0) return;
+    if (!access.confine || access.preferMounts || abi == 0) return;
     const Access handled = handledRights(abi);
     landlock_ruleset_attr attributes{};
     attributes.handled_access_fs = handled;

@@ -7,8 +7,10 @@
 // which neither the program nor anything it starts can widen it.
 //
 // Where Landlock is missing (an older kernel, a container that filters its
-// system calls), the child runs with the grader's own file access and the grader
-// says so once (fileConfinementNote()).
+// system calls), a mount namespace stands in where the child gets one
+// (MountSandbox.hpp: it hides the excluded trees and makes all but the writable
+// paths read-only); where neither is there, the child runs with the grader's own
+// file access. The grader says so once (fileConfinementNote()).
 
 #include <filesystem>
 #include <string>
@@ -27,6 +29,9 @@ struct FileAccess {
     /// folder inside a build folder); a readable or writable path inside one
     /// stays granted.
     std::vector<std::filesystem::path> excluded;
+    /// The mount namespace fallback (MountSandbox.hpp) even where Landlock is
+    /// there: for the tests of the fallback.
+    bool preferMounts = false;
 };
 
 /// Confined access to what every program needs: the system's folders (/usr,
@@ -46,7 +51,9 @@ int landlockAbi();
 /// True when FileAccess is enforced on this system.
 inline bool filesCanBeConfined() { return landlockAbi() > 0; }
 
-/// One line for a report when files cannot be confined here, else "".
+/// One line for a report when files cannot be confined with Landlock here
+/// (saying whether the mount namespace fallback, MountSandbox.hpp, stands in),
+/// else "".
 std::string fileConfinementNote();
 
 /// A Landlock ruleset made from a FileAccess before fork, for the child to enter.

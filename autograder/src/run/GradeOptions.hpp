@@ -34,6 +34,7 @@ struct Options {
     int jobs = 1;                             // cases rendered at once
     std::filesystem::path workDir;            // empty = a fresh folder under the system's temp dir
     std::filesystem::path shaderCache;        // --shader-cache: Mesa's cache for the lab programs; empty = the user's
+    std::vector<std::filesystem::path> privateDirs;   // --private: kept from the lab programs (a class's submissions, grades)
     std::optional<GradeStatus> expect;        // Passed or NotAttempted: exit 1 unless every case has it
     std::filesystem::path outOfGalleryDir;    // --check-hints DIR: mistakes outside the gallery
                                               // (DIR/<lab>/mistakes/*.mistake), mode CheckMistakes
