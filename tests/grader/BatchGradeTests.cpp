@@ -93,6 +93,32 @@ TEST_CASE("findSubmissions takes folders and archives, skips the rest, refuses t
     CHECK_THROWS_AS(findSubmissions(folder / "subs", skipped), InputError);
 }
 
+TEST_CASE("A staged submission is a copy: links stay links, and a changed input is named") {
+    test::TempFolder folder("batch-stage");
+    folder.write("subs/alice/labs/01_transforms/transforms.cpp", "int a;\n");
+    folder.write("subs/alice/labs/01_transforms/cameras.cpp", "int b;\n");
+    folder.write("elsewhere/secret.cpp", "int secret;\n");
+    std::filesystem::create_symlink(folder / "elsewhere/secret.cpp", folder / "subs/alice/labs/link.cpp");
+    Submission alice{"alice", folder / "subs/alice", SubmissionKind::Folder};
+
+    std::vector<InputFile> before = recordInputs(alice);
+    REQUIRE(before.size() == 3);
+    CHECK(before[0].path == "labs/01_transforms/cameras.cpp");
+    std::filesystem::path labs = stageSubmission(alice, folder / "stage");
+    CHECK(labs == folder / "stage" / "labs");
+    CHECK(std::filesystem::is_regular_file(labs / "01_transforms/transforms.cpp"));
+    CHECK(std::filesystem::is_symlink(labs / "link.cpp"));   // a link, never followed by the grader
+    CHECK(changedInputs(before, recordInputs(alice)).empty());
+
+    folder.write("subs/alice/labs/01_transforms/transforms.cpp", "#error sabotaged\n");
+    folder.write("subs/alice/labs/new.cpp", "");
+    std::filesystem::remove(folder / "subs/alice/labs/01_transforms/cameras.cpp");
+    CHECK(changedInputs(before, recordInputs(alice)) ==
+          std::vector<std::string>{"labs/01_transforms/transforms.cpp", "labs/new.cpp (new)",
+                                   "labs/01_transforms/cameras.cpp (gone)"});
+    CHECK(inputsText(before).find("  labs/01_transforms/transforms.cpp\n") != std::string::npos);
+}
+
 TEST_CASE("addResults sums points per lab from results.json and names what did not pass") {
     test::TempFolder folder("batch-results");
     std::filesystem::path file = folder.write("results.json", R"({"score": 3, "tests": [
