@@ -1,6 +1,7 @@
 #include "ChildProcess.hpp"
 
 #include "ChildSide.hpp"
+#include "MountSandbox.hpp"
 #include "ProcessContainment.hpp"
 #include "StrayProcesses.hpp"
 
@@ -197,17 +198,22 @@ bool builtWithAddressSanitizer() {
 #endif
 }
 
-ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::filesystem::path& workDir,
-                          const ProcessLimits& limits) {
-    ProcessOutcome outcome;
-    outcome.timeoutSeconds = limits.timeoutSeconds;
-    outcome.maxProcesses = limits.maxProcesses;
-    if (argv.empty() || argv[0].empty()) {
-        outcome.startError = "no program given";
-        return outcome;
-    }
+namespace {
 
-    ChildSetup setup;
+// What watching a started child found.
+struct Watch {
+    bool timedOut = false;
+    bool tooManyProcesses = false;
+    bool reported = false;          // the namespace's process 1 sent `fromInit`
+    bool reportOpen = false;        // its pipe was still open when the watch ended
+    int fromInit[2] = {0, 0};       // the program's wait status, the processes it left
+};
+
+// The child's arguments, limits, environment, namespaces and file sandbox
+// (`sandbox`, or `mounts` where Landlock is missing), all made before fork.
+// Returns why the child cannot start, or "".
+std::string prepareChild(const std::vector<std::string>& argv, const std::filesystem::path& workDir,
+                         const ProcessLimits& limits, ChildSetup& setup, FileSandbox& sandbox, MountSandbox& mounts) {
     setup.arguments = argv;
     for (std::string& argument : setup.arguments) setup.argv.push_back(argument.data());
     setup.argv.push_back(nullptr);
@@ -218,38 +224,74 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
     setup.addLimit(RLIMIT_CORE, 0);
     setup.setEnvironment(limits.environment);
     setup.unshareFlags = isolationFlags(limits.isolateNetwork, limits.ownPidNamespace);
-    FileSandbox sandbox(limits.files);
-    if (!sandbox.error().empty()) {
-        outcome.startError = "could not confine the files of " + argv[0] + ": " + sandbox.error();
-        return outcome;
-    }
+    sandbox = FileSandbox(limits.files);
+    if (!sandbox.error().empty()) return "could not confine the files of " + argv[0] + ": " + sandbox.error();
     setup.fileSandbox = sandbox.descriptor();
     // Without Landlock, mounts stand in, in the child's own mount namespace only.
     const bool mountsInstead = limits.files.confine && !sandbox.valid() && (setup.unshareFlags & CLONE_NEWNS) != 0;
-    MountSandbox mounts(mountsInstead ? limits.files : FileAccess{});
+    mounts = MountSandbox(mountsInstead ? limits.files : FileAccess{});
     if (mounts.valid()) setup.mountSandbox = &mounts;
     setup.graderArguments = program_invocation_name;
     setup.graderArgumentsLength = program_invocation_name ? graderArgumentsLength() : 0;
-    const bool ownPids = (setup.unshareFlags & CLONE_NEWPID) != 0;
-    // The child and its namespace's process 1 are in the group beside the program.
-    const std::size_t helpers = ownPids ? 2 : 0;
-    becomeSubreaper();
     // RLIMIT_NPROC counts every task of the user; in the child's own user namespace
-    // only the child's. It does not bind root: the watchdog below is the guard there.
+    // only the child's. It does not bind root: the watchdog is the guard there.
     if (limits.maxTasks > 0 && getuid() != 0) {
         bool ownCount = (setup.unshareFlags & CLONE_NEWUSER) != 0;
         setup.addLimit(RLIMIT_NPROC, static_cast<rlim_t>(limits.maxTasks + (ownCount ? 0 : userTaskCount())));
     }
+    return "";
+}
 
-    Pipe output;
-    Pipe execStatus;
-    Pipe report;   // from the namespace's process 1: the program's wait status, and what it left
-    if (!output.valid() || !execStatus.valid() || !report.valid()) {
-        outcome.startError = std::string("could not create a pipe: ") + std::strerror(errno);
-        return outcome;
+// Waits for the child under the limits while draining its output into
+// `capture` (`pipeOpen` false once the pipe reached its end). With its own PID
+// namespace (`ownPids`), its ending comes from the namespace's process 1
+// through `reportFd`; `helpers` processes of its group are the grader's.
+Watch watchChild(pid_t pid, int outputFd, int reportFd, bool ownPids, std::size_t helpers, const ProcessLimits& limits,
+                 Clock::time_point start, OutputCapture& capture, bool& pipeOpen) {
+    Watch watch;
+    watch.reportOpen = ownPids;
+    Clock::time_point lastCount = start;
+    for (;;) {
+        double remaining = limits.timeoutSeconds - secondsSince(start);
+        if (remaining <= 0) {
+            watch.timedOut = true;
+            return watch;
+        }
+        // Wake at least every 25 ms to notice a child that exited while a
+        // grandchild still holds the pipe open.
+        int waitMs = static_cast<int>(std::min(remaining * 1000.0 + 1.0, 25.0));
+        pollfd entries[2];
+        nfds_t count = 0;
+        if (pipeOpen) entries[count++] = {outputFd, POLLIN, 0};
+        if (watch.reportOpen) entries[count++] = {reportFd, POLLIN, 0};
+        poll(entries, count, waitMs);
+        if (pipeOpen) pipeOpen = drain(outputFd, capture);
+        if (watch.reportOpen) {
+            ssize_t got = read(reportFd, watch.fromInit, sizeof watch.fromInit);
+            watch.reported = got == static_cast<ssize_t>(sizeof watch.fromInit);
+            if (got >= 0) watch.reportOpen = false;
+            // The report is the init's last act: the child ends right after it.
+            if (watch.reported) {
+                waitForEnd(pid);
+                return watch;
+            }
+        }
+        if (childHasEnded(pid)) return watch;
+        // The fork-bomb watchdog, ten times a second (it reads /proc).
+        if (limits.maxProcesses > 0 && Clock::now() - lastCount >= std::chrono::milliseconds(100)) {
+            lastCount = Clock::now();
+            if (processGroupSize(pid) > limits.maxProcesses + helpers) {
+                watch.tooManyProcesses = true;
+                return watch;
+            }
+        }
     }
+}
 
-    Clock::time_point start = Clock::now();
+// Forks the child and waits for its exec: its pid, or -1 with `startError` set
+// (the fork, the work folder, the sandbox or the exec failed; what it started is reaped).
+pid_t startChild(const ChildSetup& setup, const std::vector<std::string>& argv, Pipe& output, Pipe& execStatus,
+                 Pipe& report, std::string& startError) {
     pid_t pid = 0;
     {
         std::lock_guard<std::mutex> starting(childStartMutex());
@@ -258,10 +300,9 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
         if (pid > 0) registerChild(pid);
     }
     if (pid < 0) {
-        outcome.startError = std::string("could not fork: ") + std::strerror(errno);
-        return outcome;
+        startError = std::string("could not fork: ") + std::strerror(errno);
+        return -1;
     }
-
     setpgid(pid, pid); // also done by the child; whichever runs first wins the race
     output.closeWrite();
     execStatus.closeWrite();
@@ -273,96 +314,22 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
     ssize_t got;
     while ((got = read(execStatus.readEnd(), failure, sizeof failure)) < 0 && errno == EINTR) {
     }
-    if (got == static_cast<ssize_t>(sizeof failure)) {
-        reap(pid);
-        unregisterChild(pid);
-        killStrayProcesses(pid);
-        outcome.startError = failure[0] == 0
-            ? "could not enter the work directory " + setup.workDir + ": " + std::strerror(failure[1])
-            : failure[0] == 2 ? "could not confine the files of " + argv[0] + ": " + std::strerror(failure[1])
-                              : "could not start " + argv[0] + ": " + std::strerror(failure[1]);
-        outcome.seconds = secondsSince(start);
-        return outcome;
-    }
-
-    fcntl(output.readEnd(), F_SETFL, fcntl(output.readEnd(), F_GETFL) | O_NONBLOCK);
-    fcntl(report.readEnd(), F_SETFL, fcntl(report.readEnd(), F_GETFL) | O_NONBLOCK);
-    OutputCapture capture(limits.outputLimitBytes);
-    bool pipeOpen = true;
-    // With its own PID namespace, the program's ending and what it left there
-    // come from the namespace's process 1 (its wait status, the count); without
-    // a report (the init was killed), from the child.
-    bool reportOpen = ownPids;
-    int fromInit[2] = {0, 0};
-    bool reported = false;
-    bool timedOut = false;
-    bool tooManyProcesses = false;
-    Clock::time_point lastCount = start;
-    for (;;) {
-        double remaining = limits.timeoutSeconds - secondsSince(start);
-        if (remaining <= 0) {
-            timedOut = true;
-            break;
-        }
-        // Wake at least every 25 ms to notice a child that exited while a
-        // grandchild still holds the pipe open.
-        int waitMs = static_cast<int>(std::min(remaining * 1000.0 + 1.0, 25.0));
-        pollfd entries[2];
-        nfds_t count = 0;
-        if (pipeOpen) entries[count++] = {output.readEnd(), POLLIN, 0};
-        if (reportOpen) entries[count++] = {report.readEnd(), POLLIN, 0};
-        poll(entries, count, waitMs);
-        if (pipeOpen) pipeOpen = drain(output.readEnd(), capture);
-        if (reportOpen) {
-            ssize_t got = read(report.readEnd(), fromInit, sizeof fromInit);
-            reported = got == static_cast<ssize_t>(sizeof fromInit);
-            if (got >= 0) reportOpen = false;
-            // The report is the init's last act: the child ends right after it.
-            if (reported) {
-                waitForEnd(pid);
-                break;
-            }
-        }
-        if (childHasEnded(pid)) break;
-        // The fork-bomb watchdog, ten times a second (it reads /proc).
-        if (limits.maxProcesses > 0 && Clock::now() - lastCount >= std::chrono::milliseconds(100)) {
-            lastCount = Clock::now();
-            if (processGroupSize(pid) > limits.maxProcesses + helpers) {
-                tooManyProcesses = true;
-                break;
-            }
-        }
-    }
-
-    // Whatever is left (the child if it timed out; grandchildren of its group,
-    // daemons that left the group, in any case) goes now, before the child is
-    // reaped: a zombie's pid, and so its group's id, cannot be reused meanwhile.
-    // Then the last output is read.
-    if (timedOut || tooManyProcesses) {
-        kill(-pid, SIGKILL);
-        kill(pid, SIGKILL);
-    }
-    // A namespace's process 1 that reported has killed everything the program
-    // started: nothing can leave a PID namespace. The sweep, which reads /proc,
-    // is then skipped (it would delay the end of every case a little).
-    std::size_t strays = reported ? 0 : killStrayProcesses(pid);
-    int status = reap(pid);
+    if (got != static_cast<ssize_t>(sizeof failure)) return pid;
+    reap(pid);
     unregisterChild(pid);
-    if (pipeOpen) drain(output.readEnd(), capture);
+    killStrayProcesses(pid);
+    startError = failure[0] == 0
+        ? "could not enter the work directory " + setup.workDir + ": " + std::strerror(failure[1])
+        : failure[0] == 2 ? "could not confine the files of " + argv[0] + ": " + std::strerror(failure[1])
+                          : "could not start " + argv[0] + ": " + std::strerror(failure[1]);
+    return -1;
+}
 
-    if (!reported && reportOpen)
-        reported = read(report.readEnd(), fromInit, sizeof fromInit) == static_cast<ssize_t>(sizeof fromInit);
-    if (reported) {
-        status = fromInit[0];
-        strays += static_cast<std::size_t>(fromInit[1]);
-    }
-
-    outcome.seconds = secondsSince(start);
-    outcome.output = printableText(capture.text());
-    outcome.outputTruncated = capture.truncated();
-    if (timedOut) {
+// How the program ended, from the watch and its wait status.
+void describeEnding(ProcessOutcome& outcome, const Watch& watch, int status, std::size_t strays) {
+    if (watch.timedOut) {
         outcome.ending = ProcessEnding::TimedOut;
-    } else if (tooManyProcesses) {
+    } else if (watch.tooManyProcesses) {
         outcome.ending = ProcessEnding::TooManyProcesses;
     } else if (WIFSIGNALED(status)) {
         outcome.ending = ProcessEnding::Signalled;
@@ -372,7 +339,78 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::files
         outcome.exitCode = WEXITSTATUS(status);
     }
     // A program killed for its time or its processes has its group killed with it.
-    if (!timedOut && !tooManyProcesses) outcome.strayProcesses = strays;
+    if (!watch.timedOut && !watch.tooManyProcesses) outcome.strayProcesses = strays;
+}
+
+} // namespace
+
+ProcessOutcome runProcess(const std::vector<std::string>& argv, const std::filesystem::path& workDir,
+                          const ProcessLimits& limits) {
+    ProcessOutcome outcome;
+    outcome.timeoutSeconds = limits.timeoutSeconds;
+    outcome.maxProcesses = limits.maxProcesses;
+    if (argv.empty() || argv[0].empty()) {
+        outcome.startError = "no program given";
+        return outcome;
+    }
+    ChildSetup setup;
+    FileSandbox sandbox;
+    MountSandbox mounts;
+    outcome.startError = prepareChild(argv, workDir, limits, setup, sandbox, mounts);
+    if (!outcome.startError.empty()) return outcome;
+    const bool ownPids = (setup.unshareFlags & CLONE_NEWPID) != 0;
+    becomeSubreaper();
+
+    Pipe output;
+    Pipe execStatus;
+    Pipe report;   // from the namespace's process 1: the program's wait status, and what it left
+    if (!output.valid() || !execStatus.valid() || !report.valid()) {
+        outcome.startError = std::string("could not create a pipe: ") + std::strerror(errno);
+        return outcome;
+    }
+
+    Clock::time_point start = Clock::now();
+    const pid_t pid = startChild(setup, argv, output, execStatus, report, outcome.startError);
+    if (pid < 0) {
+        outcome.seconds = secondsSince(start);
+        return outcome;
+    }
+
+    fcntl(output.readEnd(), F_SETFL, fcntl(output.readEnd(), F_GETFL) | O_NONBLOCK);
+    fcntl(report.readEnd(), F_SETFL, fcntl(report.readEnd(), F_GETFL) | O_NONBLOCK);
+    OutputCapture capture(limits.outputLimitBytes);
+    bool pipeOpen = true;
+    // The child and its namespace's process 1 are in the group beside the program.
+    Watch watch = watchChild(pid, output.readEnd(), report.readEnd(), ownPids, ownPids ? 2 : 0, limits, start,
+                             capture, pipeOpen);
+
+    // Whatever is left (the child if it timed out; grandchildren of its group,
+    // daemons that left the group, in any case) goes now, before the child is
+    // reaped: a zombie's pid, and so its group's id, cannot be reused meanwhile.
+    // Then the last output is read.
+    if (watch.timedOut || watch.tooManyProcesses) {
+        kill(-pid, SIGKILL);
+        kill(pid, SIGKILL);
+    }
+    // A namespace's process 1 that reported has killed everything the program
+    // started: nothing can leave a PID namespace. The sweep, which reads /proc,
+    // is then skipped (it would delay the end of every case a little).
+    std::size_t strays = watch.reported ? 0 : killStrayProcesses(pid);
+    int status = reap(pid);
+    unregisterChild(pid);
+    if (pipeOpen) drain(output.readEnd(), capture);
+    if (!watch.reported && watch.reportOpen)
+        watch.reported = read(report.readEnd(), watch.fromInit, sizeof watch.fromInit) ==
+                         static_cast<ssize_t>(sizeof watch.fromInit);
+    if (watch.reported) {
+        status = watch.fromInit[0];
+        strays += static_cast<std::size_t>(watch.fromInit[1]);
+    }
+
+    outcome.seconds = secondsSince(start);
+    outcome.output = printableText(capture.text());
+    outcome.outputTruncated = capture.truncated();
+    describeEnding(outcome, watch, status, strays);
     return outcome;
 }
 
