@@ -193,93 +193,128 @@ std::string stubNamed(const std::string& reason) {
 
 } // namespace
 
-void printReport(std::ostream& out, const std::vector<GradeResult>& results, const Totals& totals) {
+namespace {
+
+// The table's columns, sized to what they hold, and its pass limits when every
+// case shares them.
+struct TableLayout {
     std::size_t labWidth = 3, caseWidth = 4, statusWidth = 6, pointsWidth = 6, pixelsWidth = 16, flipWidth = 9;
-    bool uniform = !results.empty() && sameThresholds(results);
-    bool known = std::any_of(results.begin(), results.end(),
-                             [](const GradeResult& result) { return result.maxFlipMean > 0.0; });
-    auto pointsText = [](const GradeResult& result) {
-        return formatPoints(result.points) + " / " + formatPoints(result.maxPoints);
-    };
+    bool uniform = false;     // every case has the same thresholds
+    bool known = false;       // some case has thresholds at all
+    std::string pixelsLimit;  // "pass: <= 0.20%" under the header, when uniform and known
+    std::string flipLimit;
+    std::size_t rowStart() const { return labWidth + caseWidth + statusWidth + pointsWidth + 8; }
+};
+
+std::string pointsText(const GradeResult& result) {
+    return formatPoints(result.points) + " / " + formatPoints(result.maxPoints);
+}
+
+TableLayout layoutOf(const std::vector<GradeResult>& results, const Totals& totals) {
+    TableLayout layout;
+    layout.uniform = !results.empty() && sameThresholds(results);
+    layout.known = std::any_of(results.begin(), results.end(),
+                               [](const GradeResult& result) { return result.maxFlipMean > 0.0; });
     for (const GradeResult& result : results) {
-        labWidth = std::max(labWidth, result.lab.size());
-        statusWidth = std::max(statusWidth, std::string(statusName(result.status)).size());
+        layout.labWidth = std::max(layout.labWidth, result.lab.size());
+        layout.statusWidth = std::max(layout.statusWidth, std::string(statusName(result.status)).size());
         if (result.counted && collapsed(totals, result.lab)) {   // its one line says "(N cases)" and the lab's points
-            caseWidth = std::max<std::size_t>(caseWidth, 10);
-            pointsWidth = std::max<std::size_t>(pointsWidth, 7);
+            layout.caseWidth = std::max<std::size_t>(layout.caseWidth, 10);
+            layout.pointsWidth = std::max<std::size_t>(layout.pointsWidth, 7);
             continue;
         }
-        caseWidth = std::max(caseWidth, caseLabel(result).size());
-        pointsWidth = std::max(pointsWidth, pointsText(result).size());
+        layout.caseWidth = std::max(layout.caseWidth, caseLabel(result).size());
+        layout.pointsWidth = std::max(layout.pointsWidth, pointsText(result).size());
     }
-    std::string pixelsLimit = uniform && known ? "pass: <= " + percentText(results.front().maxBadFraction) : "";
-    std::string flipLimit = uniform && known ? "pass: <= " + flipText(results.front().maxFlipMean) : "";
-    pixelsWidth = std::max(pixelsWidth, pixelsLimit.size());
-    std::size_t indent = labWidth + 2;
+    if (layout.uniform && layout.known) {
+        layout.pixelsLimit = "pass: <= " + percentText(results.front().maxBadFraction);
+        layout.flipLimit = "pass: <= " + flipText(results.front().maxFlipMean);
+    }
+    layout.pixelsWidth = std::max(layout.pixelsWidth, layout.pixelsLimit.size());
+    return layout;
+}
 
-    out << padded("lab", labWidth) << "  " << padded("case", caseWidth) << "  " << padded("status", statusWidth)
-        << "  " << padded("points", pointsWidth) << "  " << padded("differing pixels", pixelsWidth) << "  "
-        << "FLIP mean\n";
-    if (uniform && known)
-        out << std::string(labWidth + caseWidth + statusWidth + pointsWidth + 8, ' ') << "  "
-            << padded(pixelsLimit, pixelsWidth) << "  " << flipLimit << "\n";
-    std::size_t columns = labWidth + caseWidth + statusWidth + pointsWidth + pixelsWidth + flipWidth + 10;
+void printHeader(std::ostream& out, const TableLayout& layout) {
+    out << padded("lab", layout.labWidth) << "  " << padded("case", layout.caseWidth) << "  "
+        << padded("status", layout.statusWidth) << "  " << padded("points", layout.pointsWidth) << "  "
+        << padded("differing pixels", layout.pixelsWidth) << "  " << "FLIP mean\n";
+    if (layout.uniform && layout.known)
+        out << std::string(layout.rowStart(), ' ') << "  " << padded(layout.pixelsLimit, layout.pixelsWidth) << "  "
+            << layout.flipLimit << "\n";
+    std::size_t columns = layout.rowStart() + layout.pixelsWidth + layout.flipWidth + 2;
     out << std::string(std::max<std::size_t>(columns, 40), '-') << "\n";
+}
 
-    std::vector<std::string> collapsedShown;
-    for (const GradeResult& result : results) {
-        if (result.counted && collapsed(totals, result.lab)) {
-            if (std::find(collapsedShown.begin(), collapsedShown.end(), result.lab) != collapsedShown.end()) continue;
-            collapsedShown.push_back(result.lab);
-            auto lab = std::find_if(totals.labs.begin(), totals.labs.end(),
-                                    [&](const LabTotals& entry) { return entry.lab == result.lab; });
-            int count = lab->statuses.total();
-            out << padded(result.lab, labWidth) << "  "
-                << padded("(" + std::to_string(count) + (count == 1 ? " case)" : " cases)"), caseWidth) << "  "
-                << padded(statusName(GradeStatus::NotAttempted), statusWidth) << "  "
-                << padded(formatPoints(lab->points) + " / " + formatPoints(lab->maxPoints), pointsWidth);
-            const std::string first = labToStartWith(result);
-            const std::string stub = stubNamed(result.reason);
-            if (first != result.lab) {
-                out << "  waits for lab " << first << " (" << stub << " is a stub there): start with docs/labs/"
-                    << first << ".md\n";
-            } else {
-                out << "  start with docs/labs/" << result.lab << ".md\n";
-                // The stub the first case ran into, on a line of its own under that text (or
-                // under the case column, when the table is too wide for that).
-                const std::string text = "first stub: " + stub;
-                std::size_t column = labWidth + caseWidth + statusWidth + pointsWidth + 8;
-                if (column + text.size() > 100) column = labWidth + 2;
-                if (!stub.empty() && column + text.size() <= 100) out << std::string(column, ' ') << text << "\n";
-            }
-            continue;
-        }
-        std::string row = padded(result.lab, labWidth) + "  " + padded(caseLabel(result), caseWidth) + "  " +
-                          padded(statusName(result.status), statusWidth) + "  " +
-                          padded(pointsText(result), pointsWidth) + "  ";
-        if (result.metrics) {
-            std::string pixels = pixelsCell(result), flip = flipCell(result);
-            if (!uniform && known) {
-                pixels += " (<= " + percentText(result.maxBadFraction) + ")";
-                flip += " (<= " + flipText(result.maxFlipMean) + ")";
-            }
-            row += padded(pixels, pixelsWidth) + "  " + flip;
-        } else if (result.propertyCheck && (result.status == GradeStatus::Passed || result.status == GradeStatus::Failed)) {
-            // A property check has no picture: its verdict; what it measured is in the details when it fails.
-            row += result.status == GradeStatus::Passed ? "property check: holds"
-                                                        : "property check: does not hold (see the details below)";
-        } else if (!result.reason.empty()) {
-            // The reason in full where it fits, else in the details.
-            bool fits = row.size() + result.reason.size() <= kLineWidth && result.reason.find('\n') == std::string::npos;
-            row += fits ? result.reason : std::string("(see the details below)");
-        }
-        while (!row.empty() && row.back() == ' ') row.pop_back();
-        out << row << (result.counted ? "" : "  (not counted)") << "\n";
-        if (result.hasHint())
-            for (const std::string& line : wrapped(hintLine(result), kLineWidth, indent + 6, indent)) out << line << "\n";
+// The one line of a lab whose every case is "not attempted", and where to start.
+void printCollapsedLab(std::ostream& out, const TableLayout& layout, const Totals& totals, const GradeResult& result) {
+    auto lab = std::find_if(totals.labs.begin(), totals.labs.end(),
+                            [&](const LabTotals& entry) { return entry.lab == result.lab; });
+    int count = lab->statuses.total();
+    out << padded(result.lab, layout.labWidth) << "  "
+        << padded("(" + std::to_string(count) + (count == 1 ? " case)" : " cases)"), layout.caseWidth) << "  "
+        << padded(statusName(GradeStatus::NotAttempted), layout.statusWidth) << "  "
+        << padded(formatPoints(lab->points) + " / " + formatPoints(lab->maxPoints), layout.pointsWidth);
+    const std::string first = labToStartWith(result);
+    const std::string stub = stubNamed(result.reason);
+    if (first != result.lab) {
+        out << "  waits for lab " << first << " (" << stub << " is a stub there): start with docs/labs/" << first
+            << ".md\n";
+        return;
     }
+    out << "  start with docs/labs/" << result.lab << ".md\n";
+    // The stub the first case ran into, on a line of its own under that text (or
+    // under the case column, when the table is too wide for that).
+    const std::string text = "first stub: " + stub;
+    std::size_t column = layout.rowStart();
+    if (column + text.size() > 100) column = layout.labWidth + 2;
+    if (!stub.empty() && column + text.size() <= 100) out << std::string(column, ' ') << text << "\n";
+}
 
-    // Details: only the cases that did not pass, and one entry per distinct error of a lab.
+// One case's row: its metrics, its verdict or its reason; then its hint.
+void printCaseRow(std::ostream& out, const TableLayout& layout, const GradeResult& result) {
+    std::string row = padded(result.lab, layout.labWidth) + "  " + padded(caseLabel(result), layout.caseWidth) + "  " +
+                      padded(statusName(result.status), layout.statusWidth) + "  " +
+                      padded(pointsText(result), layout.pointsWidth) + "  ";
+    if (result.metrics) {
+        std::string pixels = pixelsCell(result), flip = flipCell(result);
+        if (!layout.uniform && layout.known) {
+            pixels += " (<= " + percentText(result.maxBadFraction) + ")";
+            flip += " (<= " + flipText(result.maxFlipMean) + ")";
+        }
+        row += padded(pixels, layout.pixelsWidth) + "  " + flip;
+    } else if (result.propertyCheck && (result.status == GradeStatus::Passed || result.status == GradeStatus::Failed)) {
+        // A property check has no picture: its verdict; what it measured is in the details when it fails.
+        row += result.status == GradeStatus::Passed ? "property check: holds"
+                                                    : "property check: does not hold (see the details below)";
+    } else if (!result.reason.empty()) {
+        // The reason in full where it fits, else in the details.
+        bool fits = row.size() + result.reason.size() <= kLineWidth && result.reason.find('\n') == std::string::npos;
+        row += fits ? result.reason : std::string("(see the details below)");
+    }
+    while (!row.empty() && row.back() == ' ') row.pop_back();
+    out << row << (result.counted ? "" : "  (not counted)") << "\n";
+    const std::size_t indent = layout.labWidth + 2;
+    if (result.hasHint())
+        for (const std::string& line : wrapped(hintLine(result), kLineWidth, indent + 6, indent)) out << line << "\n";
+}
+
+// A case that did not pass: its reason in full, where it differs, and its pictures.
+void printCaseDetails(std::ostream& out, const GradeResult& result) {
+    for (const std::string& line :
+         wrapped(result.fullName() + ": " + statusName(result.status) + ": " + result.reason, kLineWidth, 6, 2))
+        out << line << "\n";
+    if (!result.difference.empty())
+        for (const std::string& line : wrapped("where: " + result.difference, kLineWidth, 11, 4)) out << line << "\n";
+    if (!result.renderedImage.empty() && result.status == GradeStatus::Failed)
+        out << "    yours:     " << result.renderedImage.string() << "\n";
+    if (!result.heatMapImage.empty()) out << "    heat map:  " << result.heatMapImage.string() << "\n";
+    if (!result.referenceImage.empty() && result.status == GradeStatus::Failed)
+        out << "    reference: " << result.referenceImage.string() << "\n";
+}
+
+// Details: only the cases that did not pass, and one entry per distinct error of a lab.
+void printDetails(std::ostream& out, const TableLayout& layout, const std::vector<GradeResult>& results,
+                  const Totals& totals) {
     bool headerPrinted = false;
     auto header = [&]() {
         if (!headerPrinted) out << "\ndetails (the cases that did not pass):\n";
@@ -290,35 +325,19 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
         if (result.status == GradeStatus::Passed) continue;
         if (result.counted && collapsed(totals, result.lab)) continue;
         if (result.status == GradeStatus::Error) {
+            const std::string output = lastLines(result.programOutput, kOutputLinesShown);
             auto group = std::find_if(errors.begin(), errors.end(), [&](const ErrorGroup& entry) {
-                return entry.lab == result.lab && entry.reason == result.reason &&
-                       entry.output == lastLines(result.programOutput, kOutputLinesShown);
+                return entry.lab == result.lab && entry.reason == result.reason && entry.output == output;
             });
-            if (group == errors.end()) {
-                errors.push_back(ErrorGroup{result.lab, result.reason,
-                                            lastLines(result.programOutput, kOutputLinesShown), {}});
-                group = errors.end() - 1;
-            }
+            if (group == errors.end()) group = errors.insert(errors.end(), ErrorGroup{result.lab, result.reason, output, {}});
             group->cases.push_back(caseLabel(result));
             continue;
         }
-        if (result.status == GradeStatus::NotAttempted || result.status == GradeStatus::NoReference) {
-            std::size_t rowWidth = labWidth + caseWidth + statusWidth + pointsWidth + 8;
-            if (rowWidth + result.reason.size() <= kLineWidth && result.reason.find('\n') == std::string::npos)
-                continue;   // the row said it in full
-        }
+        if ((result.status == GradeStatus::NotAttempted || result.status == GradeStatus::NoReference) &&
+            layout.rowStart() + result.reason.size() <= kLineWidth && result.reason.find('\n') == std::string::npos)
+            continue;   // the row said it in full
         header();
-        for (const std::string& line :
-             wrapped(result.fullName() + ": " + statusName(result.status) + ": " + result.reason, kLineWidth, 6, 2))
-            out << line << "\n";
-        if (!result.difference.empty())
-            for (const std::string& line : wrapped("where: " + result.difference, kLineWidth, 11, 4))
-                out << line << "\n";
-        if (!result.renderedImage.empty() && result.status == GradeStatus::Failed)
-            out << "    yours:     " << result.renderedImage.string() << "\n";
-        if (!result.heatMapImage.empty()) out << "    heat map:  " << result.heatMapImage.string() << "\n";
-        if (!result.referenceImage.empty() && result.status == GradeStatus::Failed)
-            out << "    reference: " << result.referenceImage.string() << "\n";
+        printCaseDetails(out, result);
     }
     for (const ErrorGroup& group : errors) {
         header();
@@ -331,25 +350,45 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
             out << line << "\n";
         if (!group.output.empty()) out << "    the program's last output:\n" << group.output;
     }
+}
 
+// Missing references, the points per lab (and its cascade), the total and the score line.
+void printTotals(std::ostream& out, const TableLayout& layout, const Totals& totals) {
     int missingReferences = totals.statuses[GradeStatus::NoReference];
     if (missingReferences > 0)
         out << "\n" << missingReferences << (missingReferences == 1 ? " case has" : " cases have")
             << " no reference image: run stoa-grade --update-references from a solutions build\n";
-
     out << "\n";
     for (const LabTotals& lab : totals.labs) {
         if (lab.nothingAttempted() && !lab.hasCascade) continue;   // its one line above has the points
-        out << padded(lab.lab, labWidth) << "  " << formatPoints(lab.points) << " / " << formatPoints(lab.maxPoints)
-            << " points  (" << lab.statuses.describe() << ")\n";
+        out << padded(lab.lab, layout.labWidth) << "  " << formatPoints(lab.points) << " / "
+            << formatPoints(lab.maxPoints) << " points  (" << lab.statuses.describe() << ")\n";
         if (lab.hasCascade)
-            out << padded("", labWidth) << "  with your earlier labs " << formatPoints(lab.ownPoints)
+            out << padded("", layout.labWidth) << "  with your earlier labs " << formatPoints(lab.ownPoints)
                 << ", with their solutions " << formatPoints(lab.cascadePoints) << ": the higher counts\n";
     }
     if (totals.labs.size() > 1)
-        out << padded("total", labWidth) << "  " << formatPoints(totals.points) << " / "
+        out << padded("total", layout.labWidth) << "  " << formatPoints(totals.points) << " / "
             << formatPoints(totals.maxPoints) << " points  (" << totals.statuses.describe() << ")\n";
     out << "score: " << formatPoints(totals.points) << " / " << formatPoints(totals.maxPoints) << "\n";
+}
+
+} // namespace
+
+void printReport(std::ostream& out, const std::vector<GradeResult>& results, const Totals& totals) {
+    const TableLayout layout = layoutOf(results, totals);
+    printHeader(out, layout);
+    std::vector<std::string> collapsedShown;
+    for (const GradeResult& result : results) {
+        if (!(result.counted && collapsed(totals, result.lab))) {
+            printCaseRow(out, layout, result);
+        } else if (std::find(collapsedShown.begin(), collapsedShown.end(), result.lab) == collapsedShown.end()) {
+            collapsedShown.push_back(result.lab);
+            printCollapsedLab(out, layout, totals, result);
+        }
+    }
+    printDetails(out, layout, results, totals);
+    printTotals(out, layout, totals);
 }
 
 std::string hintLine(const GradeResult& result, std::size_t indent) {
