@@ -57,24 +57,12 @@ Access handledRights(int abi) {
     return rights;
 }
 
-std::filesystem::path normal(const std::filesystem::path& path) {
-    std::error_code error;
-    std::filesystem::path absolute = std::filesystem::weakly_canonical(std::filesystem::absolute(path), error);
-    return error ? std::filesystem::absolute(path).lexically_normal() : absolute;
-}
-
-// True when `inner` is `outer` or lies below it (both normalised).
-bool within(const std::filesystem::path& inner, const std::filesystem::path& outer) {
-    auto mismatch = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
-    return mismatch.first == outer.end();
-}
-
 void walk(const std::filesystem::path& root, const std::vector<std::filesystem::path>& excluded,
           std::vector<std::filesystem::path>& out) {
     bool holdsExcluded = false;
     for (const std::filesystem::path& path : excluded) {
-        if (within(root, path)) return;   // (only reached below the top: the caller drops the ancestors)
-        if (within(path, root)) holdsExcluded = true;
+        if (pathWithin(root, path)) return;   // (only reached below the top: the caller drops the ancestors)
+        if (pathWithin(path, root)) holdsExcluded = true;
     }
     if (!holdsExcluded) {
         out.push_back(root);
@@ -103,6 +91,17 @@ std::string addRule(int ruleset, const std::filesystem::path& path, Access right
 
 } // namespace
 
+std::filesystem::path normalPath(const std::filesystem::path& path) {
+    std::error_code error;
+    std::filesystem::path absolute = std::filesystem::weakly_canonical(std::filesystem::absolute(path), error);
+    return error ? std::filesystem::absolute(path).lexically_normal() : absolute;
+}
+
+bool pathWithin(const std::filesystem::path& inner, const std::filesystem::path& outer) {
+    auto mismatch = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
+    return mismatch.first == outer.end();
+}
+
 FileAccess systemFileAccess() {
     FileAccess access;
     access.confine = true;
@@ -115,11 +114,11 @@ FileAccess systemFileAccess() {
 
 std::vector<std::filesystem::path> treeWithout(const std::filesystem::path& root,
                                                const std::vector<std::filesystem::path>& excluded) {
-    std::filesystem::path top = normal(root);
+    std::filesystem::path top = normalPath(root);
     std::vector<std::filesystem::path> below;
     for (const std::filesystem::path& path : excluded) {
-        std::filesystem::path cut = normal(path);
-        if (!within(top, cut)) below.push_back(cut);
+        std::filesystem::path cut = normalPath(path);
+        if (!pathWithin(top, cut)) below.push_back(cut);
     }
     std::vector<std::filesystem::path> out;
     walk(top, below, out);
@@ -163,15 +162,15 @@ FileSandbox::FileSandbox(const FileAccess& access) {
     m_ruleset = static_cast<int>(ruleset);
     fcntl(m_ruleset, F_SETFD, FD_CLOEXEC);
     std::vector<std::filesystem::path> excluded;
-    for (const std::filesystem::path& path : access.excluded) excluded.push_back(normal(path));
+    for (const std::filesystem::path& path : access.excluded) excluded.push_back(normalPath(path));
     auto grant = [&](const std::filesystem::path& path, Access rights) {
         if (!m_error.empty()) return;
         m_error = addRule(m_ruleset, path, rights, handled);
     };
     for (const std::filesystem::path& tree : access.readable)
         for (const std::filesystem::path& path : treeWithout(tree, excluded)) grant(path, kRead);
-    for (const std::filesystem::path& path : access.writable) grant(normal(path), kWrite);
-    for (const std::filesystem::path& path : access.devices) grant(normal(path), kDevice);
+    for (const std::filesystem::path& path : access.writable) grant(normalPath(path), kWrite);
+    for (const std::filesystem::path& path : access.devices) grant(normalPath(path), kDevice);
     if (!m_error.empty()) {
         close(m_ruleset);
         m_ruleset = -1;

@@ -39,6 +39,12 @@ struct FileAccess {
 /// (the GL drivers' /dev/dri, /dev/null) to open.
 FileAccess systemFileAccess();
 
+/// `path` absolute, with symbolic links resolved as far as it exists.
+std::filesystem::path normalPath(const std::filesystem::path& path);
+
+/// True when `inner` is `outer` or lies below it (both normalPath()s).
+bool pathWithin(const std::filesystem::path& inner, const std::filesystem::path& outer);
+
 /// The paths to grant for `root` with the `excluded` subtrees below it carved
 /// out: {root} when none lies below it, else its entries, recursively, without
 /// the excluded ones. An excluded path that contains `root` does not remove it.

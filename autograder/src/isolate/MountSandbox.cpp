@@ -15,16 +15,9 @@ namespace stoa::grader {
 
 namespace {
 
-std::filesystem::path normal(const std::filesystem::path& path) {
-    std::error_code error;
-    std::filesystem::path absolute = std::filesystem::weakly_canonical(std::filesystem::absolute(path), error);
-    return error ? std::filesystem::absolute(path).lexically_normal() : absolute;
-}
-
 // True when `inner` lies strictly below `outer`.
 bool below(const std::filesystem::path& inner, const std::filesystem::path& outer) {
-    auto mismatch = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
-    return mismatch.first == outer.end() && mismatch.second != inner.end();
+    return pathWithin(inner, outer) && inner != outer;
 }
 
 // The mount flags a bind remount must keep (in a user namespace the kernel
@@ -85,7 +78,7 @@ MountSandbox::MountSandbox(const FileAccess& access) {
     auto existing = [&](const std::vector<std::filesystem::path>& paths) {
         std::vector<std::filesystem::path> out;
         for (const std::filesystem::path& path : paths)
-            if (std::filesystem::exists(path, error)) out.push_back(normal(path));
+            if (std::filesystem::exists(path, error)) out.push_back(normalPath(path));
         return out;
     };
     const std::vector<std::filesystem::path> writable = existing(access.writable);
