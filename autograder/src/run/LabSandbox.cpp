@@ -4,6 +4,7 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <sstream>
 #include <string>
 
 #include <pwd.h>
@@ -40,12 +41,28 @@ std::vector<std::filesystem::path> earlierSolutionShaders(const std::filesystem:
     return files;
 }
 
+// The files the sanitizer runtimes of a sanitizer build are told to read
+// (suppressions=FILE in ASAN_OPTIONS, LSAN_OPTIONS, UBSAN_OPTIONS): the lab
+// programs inherit that environment, and a runtime that cannot read its file aborts.
+std::vector<std::filesystem::path> sanitizerFiles() {
+    std::vector<std::filesystem::path> files;
+    for (const char* name : {"ASAN_OPTIONS", "LSAN_OPTIONS", "UBSAN_OPTIONS"}) {
+        const char* options = std::getenv(name);
+        if (!options) continue;
+        std::istringstream list(options);
+        for (std::string option; std::getline(list, option, ':');)
+            if (option.rfind("suppressions=", 0) == 0) files.emplace_back(option.substr(13));
+    }
+    return files;
+}
+
 } // namespace
 
 FileAccess labProgramBaseAccess(const std::filesystem::path& sourceDir, const std::filesystem::path& workRoot) {
     FileAccess access = systemFileAccess();
     for (const char* folder : {"shaders", "assets", "labs"}) access.readable.push_back(sourceDir / folder);
     access.readable.push_back(sourceDir / "autograder" / "references");
+    for (const std::filesystem::path& file : sanitizerFiles()) access.readable.push_back(file);
     access.excluded.push_back(workRoot);
     access.excluded.push_back(sourceDir / "solutions");
     return access;
