@@ -73,10 +73,12 @@ void walk(const std::filesystem::path& root, const std::vector<std::filesystem::
 }
 
 // Grants `rights` on `path` (a folder: everything below it too) in `ruleset`.
-// A path that does not exist is skipped; returns an error text otherwise.
+// A path that does not exist, or that this user cannot reach, is skipped (left
+// denied); returns an error text otherwise.
 std::string addRule(int ruleset, const std::filesystem::path& path, Access rights, Access handled) {
     int fd = open(path.c_str(), O_PATH | O_CLOEXEC);
-    if (fd < 0) return errno == ENOENT || errno == ENOTDIR ? "" : path.string() + ": " + std::strerror(errno);
+    if (fd < 0)
+        return errno == ENOENT || errno == ENOTDIR || errno == EACCES ? "" : path.string() + ": " + std::strerror(errno);
     struct stat info {};
     if (fstat(fd, &info) == 0 && !S_ISDIR(info.st_mode)) rights &= kFileRights;
     landlock_path_beneath_attr rule{};
