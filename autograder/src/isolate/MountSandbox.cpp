@@ -139,12 +139,9 @@ MountSandbox::MountSandbox(const FileAccess& access) {
         }
         m_covers.push_back(std::move(cover));
     }
-    m_descriptors.assign(std::max<std::size_t>(1, [&] {
-                             std::size_t count = 0;
-                             for (const Cover& cover : m_covers) count += cover.binds.size();
-                             return count;
-                         }()),
-                         -1);
+    std::size_t binds = 0;
+    for (const Cover& cover : m_covers) binds += cover.binds.size();
+    m_descriptors.assign(binds, -1);
 
     for (const std::string& point : mountPoints()) {
         if (underCover(point)) continue;

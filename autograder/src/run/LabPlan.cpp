@@ -106,8 +106,13 @@ RunSettings runSettings(const Options& options, const std::filesystem::path& sou
     if (const char* sandbox = std::getenv("STOA_GRADE_FILE_SANDBOX"); sandbox && std::string(sandbox) == "mounts")
         settings.files.preferMounts = true;
     settings.shaderCache = options.shaderCache.empty() ? userShaderCache() : options.shaderCache;
-    std::error_code ignored;
-    std::filesystem::create_directories(settings.shaderCache, ignored);   // Mesa could not make it, confined
+    // Made here: a confined lab program could not make it. The user's default may
+    // fail quietly (Mesa then runs without a cache); a folder asked for may not.
+    std::error_code error;
+    std::filesystem::create_directories(settings.shaderCache, error);
+    if (!options.shaderCache.empty() && !std::filesystem::is_directory(settings.shaderCache))
+        throw InputError(options.shaderCache.string(), 0,
+                         "--shader-cache: cannot create the folder" + (error ? ": " + error.message() : ""));
     // Without --timeout, each case's limit comes from its recorded render time;
     // the 60 s here is for what runs outside gradeCases() (references, --info).
     settings.caseTimeouts = options.timeoutSeconds <= 0.0;

@@ -37,9 +37,11 @@ std::filesystem::path buildRootOf(const std::filesystem::path& program);
 /// (its CMakeCache.txt says STOA_USE_SOLUTIONS:BOOL=ON).
 bool builtFromSolutions(const std::filesystem::path& buildRoot);
 
-/// Mesa's shader cache folder for this user, as Mesa picks it:
-/// $MESA_SHADER_CACHE_DIR, $XDG_CACHE_HOME/mesa_shader_cache or
-/// ~/.cache/mesa_shader_cache.
+/// The folder the lab programs get as MESA_SHADER_CACHE_DIR by default: this
+/// user's Mesa cache folder ($MESA_SHADER_CACHE_DIR, $XDG_CACHE_HOME/mesa_shader_cache
+/// or ~/.cache/mesa_shader_cache). Given a folder, Mesa keeps its cache in a
+/// mesa_shader_cache folder inside it, so the graded programs' cache sits within
+/// the window's, apart from it, in the one folder they may write.
 std::filesystem::path userShaderCache();
 
 } // namespace stoa::grader
