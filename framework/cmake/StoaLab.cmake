@@ -66,7 +66,13 @@ set_property(GLOBAL PROPERTY STOA_OUT_OF_GALLERY "")
 # so a header the student changed in their own tree is not used: the student
 # code compiles against the header the lab's app compiles against.
 function(_stoa_lab_folder_includes target lab)
-  target_include_directories(${target} PRIVATE ${STOA_LABS_DIR}/${lab})
+  # The lab's folder and its student/ folder (its header, labNN.hpp), and the
+  # student/ folders of the labs it uses, whose functions it may call.
+  get_property(uses GLOBAL PROPERTY STOA_LAB_${lab}_USES)
+  target_include_directories(${target} PRIVATE ${STOA_LABS_DIR}/${lab} ${STOA_LABS_DIR}/${lab}/student)
+  foreach(used IN LISTS uses)
+    target_include_directories(${target} PRIVATE ${STOA_LABS_DIR}/${used}/student)
+  endforeach()
   # NotImplemented records which lab a stub belongs to (stoa/core/NotImplemented.hpp).
   target_compile_definitions(${target} PRIVATE STOA_STUDENT_LAB="${lab}")
 endfunction()
@@ -114,6 +120,7 @@ function(_stoa_lab_program lab target output_dir track_name search_path objects)
     get_property(app_sources GLOBAL PROPERTY STOA_LAB_${lab}_APP)
     add_library(${app} STATIC ${app_sources})   # holds main(), which the linker takes from it
     target_link_libraries(${app} PUBLIC stoa)
+    _stoa_lab_folder_includes(${app} ${lab})
   endif()
   string(REPLACE ";" "|" search_path_joined "${search_path}")
   set(info_source ${CMAKE_BINARY_DIR}/lab-build-info/${target}.cpp)
@@ -122,16 +129,10 @@ function(_stoa_lab_program lab target output_dir track_name search_path objects)
                 "    return {\"${lab}\", \"${track_name}\", \"${STOA_LABS_DIR}/${lab}\",\n"
                 "            \"${search_path_joined}\",\n"
                 "            \"${STOA_REFERENCES_DIR}/${lab}\"};\n}\n")
-  # Written only on change, so that a reconfigure does not relink every program.
-  set(previous "")
-  if(EXISTS ${info_source})
-    file(READ ${info_source} previous)
-  endif()
-  if(NOT previous STREQUAL info_text)
-    file(WRITE ${info_source} "${info_text}")
-  endif()
+  _stoa_write_if_changed(${info_source} "${info_text}")
   add_executable(${target} ${info_source})
   target_link_libraries(${target} PRIVATE ${app})
+  _stoa_link_hand_overs(${target} "${uses};${lab}")
   string(REGEX REPLACE "^([0-9]+)_.*" "\\1" number ${lab})
   string(REGEX REPLACE "^[0-9]+_" "" short ${lab})
   set_target_properties(${target} PROPERTIES OUTPUT_NAME lab${number}_${short}
@@ -170,6 +171,16 @@ function(stoa_add_lab)
   set_property(GLOBAL PROPERTY STOA_LAB_${lab}_USES ${ARG_USES})
   set_property(GLOBAL PROPERTY STOA_LAB_${lab}_FILES ${ARG_STUDENT_FILES})
   set_property(GLOBAL APPEND PROPERTY STOA_LABS ${lab})
+  # A lab whose functions the framework calls hands them over (hand_over.cpp):
+  # one small library per lab, whichever track's student code it is linked with.
+  if(EXISTS ${STOA_LABS_DIR}/${lab}/hand_over.cpp)
+    set_property(GLOBAL PROPERTY STOA_LAB_${lab}_HANDS_OVER ON)
+    if(NOT TARGET stoa_lab_hand_over_${lab})
+      add_library(stoa_lab_hand_over_${lab} STATIC ${STOA_LABS_DIR}/${lab}/hand_over.cpp)
+      target_link_libraries(stoa_lab_hand_over_${lab} PUBLIC stoa)
+      _stoa_lab_folder_includes(stoa_lab_hand_over_${lab} ${lab})
+    endif()
+  endif()
 
   # The main track.
   set(objects "")
@@ -383,7 +394,9 @@ function(_stoa_apply_mistake mistake_file lab overlay out)
   set(${out} ${target_file} PARENT_SCOPE)
 endfunction()
 
-# Links the student code of every lab of the main track into `target` (tests).
+# Links the student code of every lab of the main track into `target` (the
+# tests of the labs' functions, the benchmarks), with the labs' headers and
+# their hand-overs.
 function(stoa_link_lab_code target)
   get_property(labs GLOBAL PROPERTY STOA_LABS)
   foreach(lab IN LISTS labs)
@@ -391,5 +404,48 @@ function(stoa_link_lab_code target)
     foreach(object IN LISTS objects)
       target_link_libraries(${target} PRIVATE ${object})
     endforeach()
+    target_include_directories(${target} PRIVATE ${STOA_LABS_DIR}/${lab}/student)
   endforeach()
+  _stoa_link_hand_overs(${target} "${labs}")
+endfunction()
+
+# The hand-overs of `labs` (each lab's hand_over.cpp, where the framework calls
+# the lab's functions) linked into `target`, and called when the program starts
+# (before main(), so that even a lab's constructor finds them): a generated
+# source fills the framework's student-code table (stoa/core/StudentCode.hpp)
+# with the student functions the program links.
+function(_stoa_link_hand_overs target labs)
+  set(declarations "")
+  set(calls "")
+  foreach(lab IN LISTS labs)
+    get_property(hands_over GLOBAL PROPERTY STOA_LAB_${lab}_HANDS_OVER)
+    if(hands_over)
+      string(REGEX REPLACE "^([0-9]+)_.*" "lab\\1" namespace ${lab})
+      string(APPEND declarations "namespace ${namespace} {\nvoid handOver(stoa::StudentCode& code);\n}\n")
+      string(APPEND calls "    ${namespace}::handOver(code);\n")
+      target_link_libraries(${target} PRIVATE stoa_lab_hand_over_${lab})
+    endif()
+  endforeach()
+  if(calls STREQUAL "")
+    return()
+  endif()
+  set(source ${CMAKE_BINARY_DIR}/lab-hand-over/${target}.cpp)
+  string(CONCAT text "// Generated by framework/cmake/StoaLab.cmake for ${target}.\n"
+                "namespace stoa {\nstruct StudentCode;\nStudentCode& studentCode();\n}\n${declarations}\n"
+                "namespace {\nbool handOverStudentCode() {\n    stoa::StudentCode& code = stoa::studentCode();\n"
+                "${calls}    return true;\n}\n[[maybe_unused]] const bool handedOver = handOverStudentCode();\n}\n")
+  _stoa_write_if_changed(${source} "${text}")
+  target_sources(${target} PRIVATE ${source})
+endfunction()
+
+# Writes a generated source only when its text changed, so that a reconfigure
+# does not recompile and relink every program.
+function(_stoa_write_if_changed file text)
+  set(previous "")
+  if(EXISTS ${file})
+    file(READ ${file} previous)
+  endif()
+  if(NOT previous STREQUAL text)
+    file(WRITE ${file} "${text}")
+  endif()
 endfunction()

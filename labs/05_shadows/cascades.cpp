@@ -4,8 +4,9 @@
 // slice frustumSliceCorners() and cascadeLightMatrix(), and renders one map per
 // slice with your renderShadowPass(). Only the cascade cases call these.
 
+#include "lab01.hpp"
+
 #include <stoa/core/NotImplemented.hpp>
-#include <stoa/math/Transforms.hpp>
 #include <stoa/render/ShadowMapping.hpp>
 
 #include <glm/glm.hpp>

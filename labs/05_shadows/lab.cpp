@@ -3,7 +3,7 @@
 // lights the scene with the student's lab-02 lighting and tests it against the
 // map with the student's shadows.glsl. The framework's ShadowRenderer
 // (stoa/render/ShadowRenderer.hpp) puts the passes together, calling the
-// student's functions handed to it here (ShadowLabCode::fromLab05()).
+// student's functions through the framework's student-code table (hand_over.cpp).
 // With cascades (cascades = N), the student's cascades.cpp fits one map per slice
 // of the camera's frustum and shaders/shadows/cascaded.frag picks the slice with
 // the student's cascades.glsl.
@@ -113,7 +113,7 @@ public:
         const stoa::Program& depth = resources.loadProgram("shadows/depth.vert", "shadows/depth.frag");
         const stoa::Program& shadowed = resources.loadProgram("shadows/shadowed.vert", "shadows/shadowed.frag");
         const stoa::Program& mapView = resources.loadProgram("shadows/depth_view.vert", "shadows/depth_view.frag");
-        m_renderer = std::make_unique<stoa::ShadowRenderer>(depth, shadowed, mapView, stoa::ShadowLabCode::fromLab05());
+        m_renderer = std::make_unique<stoa::ShadowRenderer>(depth, shadowed, mapView);
         m_depthProgram = &depth;
         m_resources = &resources;
     }

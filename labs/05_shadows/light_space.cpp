@@ -3,8 +3,9 @@
 // lookAtMatrix() and perspectiveMatrix() do most of the work; glm::ortho
 // builds the orthographic projection.
 
+#include "lab01.hpp"
+
 #include <stoa/core/NotImplemented.hpp>
-#include <stoa/math/Transforms.hpp>
 #include <stoa/render/ShadowMapping.hpp>
 
 #include <glm/glm.hpp>

@@ -49,7 +49,7 @@ public:
             return resources.loadProgram(vertex, fragment);
         };
         const stoa::DeferredPrograms programs = stoa::DeferredPrograms::load(load);
-        m_renderer = std::make_unique<stoa::DeferredRenderer>(programs, stoa::DeferredLabCode::fromLab08());
+        m_renderer = std::make_unique<stoa::DeferredRenderer>(programs);
 
         m_scene = std::make_unique<stoa::PieceDrawList>(stoa::acropolisAvenuePieces());
         std::printf("scene: %zu triangles in %zu draws\n", m_scene->triangleCount(), m_scene->items().size());

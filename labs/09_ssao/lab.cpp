@@ -55,7 +55,7 @@ public:
         m_occlusion = std::make_unique<stoa::AmbientOcclusionPass>(load("basic/image.vert", "ssao/ssao.frag"),
                                                                     load("basic/image.vert", "ssao/blur.frag"));
         m_viewProgram = &resources.loadProgram("basic/image.vert", "ssao/ao_view.frag");
-        m_renderer = std::make_unique<stoa::DeferredRenderer>(programs, stoa::DeferredLabCode::fromLab08());
+        m_renderer = std::make_unique<stoa::DeferredRenderer>(programs);
         m_overlay = std::make_unique<stoa::TextureOverlay>();
         m_scene = std::make_unique<stoa::PieceDrawList>(stoa::acropolisPieces());
         m_lighting.ambient = glm::vec3(0.62f, 0.64f, 0.68f);

@@ -28,6 +28,7 @@
 #include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/InputError.hpp>
 #include <stoa/core/Paths.hpp>
+#include <stoa/core/StudentCode.hpp>
 #include <stoa/crowd/CrowdLab.hpp>
 #include <stoa/crowd/CrowdSimulation.hpp>
 #include <stoa/crowd/CrowdXml.hpp>
@@ -70,12 +71,6 @@ public:
         m_overlay = std::make_unique<TextureOverlay>();
         m_poseFrame = std::make_unique<FrameUniforms>();
     }
-
-    CrowdApp() {
-        m_hooks.stepAgents = [this](float seconds) { stepAgents(seconds); };
-    }
-    CrowdApp(const CrowdApp&) = delete;   // the hook holds `this`
-    CrowdApp& operator=(const CrowdApp&) = delete;
 
     void loadCase(const CaseSpec& spec) override {
         m_cameras.loadCase(spec);
@@ -162,7 +157,7 @@ public:
     /// The crowd, placed and run the case's steps at the first call.
     CrowdSimulation& simulation() {
         if (!m_simulation) {
-            m_simulation = std::make_unique<CrowdSimulation>(m_world, m_maps, CrowdLabCode::fromLab10());
+            m_simulation = std::make_unique<CrowdSimulation>(m_world, m_maps);
             m_simulation->advance(m_steps);
         }
         return *m_simulation;
@@ -177,9 +172,8 @@ public:
         return Lab::runCheck(spec);
     }
 
-    /// The window steps the crowd through the framework's agent hook
-    /// (LabHooks::stepAgents), at fixed steps of the window's clock.
-    const LabHooks* hooks() const override { return &m_hooks; }
+    /// The window steps the crowd at fixed steps of its clock.
+    void update(float seconds) override { stepAgents(seconds); }
 
     bool keyPressed(unsigned char key) override {
         switch (key) {
@@ -301,7 +295,7 @@ private:
         const Md2GpuModel& gpu = *m_poseModel;
         if (!m_poseMesh) {
             const Md2Animation* animation = gpu.model.findAnimation(m_poseAnimation);   // loadCase() checked it
-            const CrowdLabCode code = CrowdLabCode::fromLab10();
+            const CrowdFunctions& code = studentCode().crowds;
             const Md2FramePair frames = code.md2FramesAt(*animation, m_poseTime, m_options.framesPerSecond);
             if (frames.first < animation->first || frames.first >= animation->first + animation->count ||
                 frames.second < animation->first || frames.second >= animation->first + animation->count) {
@@ -345,7 +339,7 @@ private:
             const bool zoomed = m_region != glm::vec4(0.0f);
             const glm::vec2 corner0 = zoomed ? glm::vec2(m_region.x, m_region.y) : grid.footprintMin;
             const glm::vec2 corner1 = zoomed ? glm::vec2(m_region.z, m_region.w) : grid.footprintMax;
-            const CrowdLabCode code = CrowdLabCode::fromLab10();
+            const CrowdFunctions& code = studentCode().crowds;
             // Heights as grey over their range in the picture (a zoomed region
             // spans a few decimetres, which the whole range would flatten).
             std::vector<float> heights(static_cast<std::size_t>(size.x) * size.y);
@@ -425,7 +419,6 @@ private:
         return text;
     }
 
-    LabHooks m_hooks;
     CameraRig m_cameras;
     CrowdPrograms m_programs;
     const Program* m_imageProgram = nullptr;

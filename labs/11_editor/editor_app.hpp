@@ -49,7 +49,7 @@
 #include <stoa/image/Image.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/Lab.hpp>
-#include <stoa/math/Transforms.hpp>
+#include "lab01.hpp"
 #include <stoa/render/AmbientOcclusion.hpp>
 #include <stoa/render/AmbientOcclusionPass.hpp>
 #include <stoa/render/DebugLineRenderer.hpp>

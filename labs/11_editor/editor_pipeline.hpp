@@ -30,7 +30,7 @@
 #include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/VertexArray.hpp>
-#include <stoa/math/Transforms.hpp>
+#include "lab01.hpp"
 #include <stoa/render/AmbientOcclusion.hpp>
 #include <stoa/render/CourseRenderer.hpp>
 #include <stoa/render/ShadowMapping.hpp>
@@ -182,24 +182,6 @@ public:
     double seconds() const { return m_seconds; }
     void setSeconds(double seconds) { m_seconds = seconds; }
 
-    /// Lab 06's verdicts as CourseRenderer asks for them (the student's functions).
-    static CourseLabCode labCode() {
-        CourseLabCode code;
-        auto frustum = std::make_shared<std::pair<glm::mat4, Frustum>>(glm::mat4(0.0f), Frustum{});
-        code.isVisible = [frustum](const BoundingSphere& sphere, const glm::mat4& viewProjection) {
-            if (frustum->first != viewProjection) *frustum = {viewProjection, frustumPlanes(viewProjection)};
-            return sphereInFrustum(frustum->second, sphere);
-        };
-        code.levelOf = [](const BoundingSphere& sphere, const Camera& camera, int height, int levelCount) {
-            return levelOfDetail(lodQuality(sphere, camera.eyePosition(), camera.fovYDegrees(), height), levelCount);
-        };
-        code.shadows = ShadowLabCode::fromLab05();
-        code.deferred = DeferredLabCode::fromLab08();
-        code.occlusionKernel = ssaoKernel(32, 1);
-        code.occlusionNoise = ssaoNoise(2);
-        return code;
-    }
-
 private:
     struct FieldMesh {
         std::vector<std::unique_ptr<GpuMesh>> levels;
@@ -258,7 +240,7 @@ private:
             return *m_programs.back();
         };
         m_crowdPrograms = CrowdPrograms::load(load);
-        m_renderer = std::make_unique<CourseRenderer>(CoursePrograms::load(load), labCode());
+        m_renderer = std::make_unique<CourseRenderer>(CoursePrograms::load(load));
         m_sparkProgram = &load("picking/sparks.vert", "picking/sparks.frag");
         m_sparkProgram->bindUniformBlock(FrameUniforms::kBlockName, FrameUniforms::kBinding);
         m_sparkBuffer = std::make_unique<Buffer>(GL_ARRAY_BUFFER);
@@ -353,8 +335,7 @@ private:
         try {
             const std::shared_ptr<const CrowdWorld> held = world->current();   // this version, however the file changes
             const CrowdWorld& loaded = *held;
-            m_crowd = std::make_unique<CrowdSimulation>(loaded, loadGroundMaps(loaded.ground, loaded.file),
-                                                        CrowdLabCode::fromLab10());
+            m_crowd = std::make_unique<CrowdSimulation>(loaded, loadGroundMaps(loaded.ground, loaded.file));
             m_crowd->advance(static_cast<int>(std::lround(3.0 / loaded.step)));   // three seconds: the agents on their way
             m_crowdRenderer = std::make_unique<CrowdRenderer>(m_crowdPrograms, *m_crowd);
             m_walked.assign(m_crowd->agents().size(), {glm::vec2(0.0f), 0.0f});

@@ -5,8 +5,9 @@
 // glm::rotate and glm::scale are what you are reimplementing.
 // glm stores matrices column by column: m[c][r] is column c, row r.
 
+#include "lab01.hpp"
+
 #include <stoa/core/NotImplemented.hpp>
-#include <stoa/math/Transforms.hpp>
 
 #include <glm/glm.hpp>
 

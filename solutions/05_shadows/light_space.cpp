@@ -3,7 +3,8 @@
 // lookAtMatrix() and perspectiveMatrix() do most of the work; glm::ortho
 // builds the orthographic projection.
 
-#include <stoa/math/Transforms.hpp>
+#include "lab01.hpp"
+
 #include <stoa/render/ShadowMapping.hpp>
 
 #include <glm/glm.hpp>

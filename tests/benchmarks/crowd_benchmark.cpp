@@ -30,6 +30,7 @@
 
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/core/Paths.hpp>
+#include <stoa/core/StudentCode.hpp>
 #include <stoa/crowd/CrowdSimulation.hpp>
 #include <stoa/crowd/CrowdXml.hpp>
 #include <stoa/gl/Framebuffer.hpp>
@@ -161,8 +162,16 @@ struct StepTiming {
     CrowdStatistics statistics;
 };
 
-StepTiming timeSteps(const Example& e, int runs, int steps, const CrowdLabCode& code) {
-    CrowdSimulation crowd(e.world, e.maps, code);
+// A simulation on `code` (CrowdSimulation takes the student's functions from the
+// framework's table when it is made).
+CrowdSimulation crowdWith(const CrowdWorld& world, const GroundMaps& maps, const CrowdFunctions& code) {
+    StudentCodeScope scope;
+    studentCode().crowds = code;
+    return CrowdSimulation(world, maps);
+}
+
+StepTiming timeSteps(const Example& e, int runs, int steps, const CrowdFunctions& code) {
+    CrowdSimulation crowd = crowdWith(e.world, e.maps, code);
     crowd.advance(30);   // warm-up: caches, the herd under way
     std::vector<double> perStep;
     for (int run = 0; run < runs; ++run) {
@@ -202,8 +211,8 @@ private:
     const CrowdSenses& m_inner;
 };
 
-CrowdLabCode countingCode() {
-    CrowdLabCode code = CrowdLabCode::fromLab10();
+CrowdFunctions countingCode() {
+    CrowdFunctions code = studentCode().crowds;
     code.walkableAt = [](const CollisionMap& map, glm::vec2 xz) {
         ++g_counters.walkable;
         return stoa::walkableAt(map, xz);
@@ -248,7 +257,7 @@ void simulationFigures(int runs, int steps, int onlyAgents) {
     for (const int agents : {1000, 10000, 100000}) {
         if (onlyAgents > 0 && agents != onlyAgents) continue;
         const Example e = tiledWorld(example, agents);
-        const StepTiming t = timeSteps(e, runs, steps, CrowdLabCode::fromLab10());
+        const StepTiming t = timeSteps(e, runs, steps, studentCode().crowds);
         const int tiles = static_cast<int>(std::lround((e.world.ground.footprintMax.x - e.world.ground.footprintMin.x) / kTile));
         std::printf("  %9zu %5dx%-2d %12.3f %14.0f %9d %9d %8d\n", t.agents, tiles, tiles, t.msPerStep,
                     t.msPerStep * 1e6 / static_cast<double>(t.agents), t.statistics.living, t.statistics.attacks,
@@ -262,10 +271,10 @@ void simulationFigures(int runs, int steps, int onlyAgents) {
     removeSend(noSend.world);
     simplify(wander.world, true);
     simplify(stand.world, false);
-    const double fullMs = timeSteps(full, runs, steps, CrowdLabCode::fromLab10()).msPerStep;
-    const double noSendMs = timeSteps(noSend, runs, steps, CrowdLabCode::fromLab10()).msPerStep;
-    const double wanderMs = timeSteps(wander, runs, steps, CrowdLabCode::fromLab10()).msPerStep;
-    const double standMs = timeSteps(stand, runs, steps, CrowdLabCode::fromLab10()).msPerStep;
+    const double fullMs = timeSteps(full, runs, steps, studentCode().crowds).msPerStep;
+    const double noSendMs = timeSteps(noSend, runs, steps, studentCode().crowds).msPerStep;
+    const double wanderMs = timeSteps(wander, runs, steps, studentCode().crowds).msPerStep;
+    const double standMs = timeSteps(stand, runs, steps, studentCode().crowds).msPerStep;
     std::printf("  %-58s %8.3f\n", "the world as it is", fullMs);
     std::printf("  %-58s %8.3f  (<send> costs %.3f)\n", "without the goats' <send> (bleat to all within 6 m)", noSendMs,
                 fullMs - noSendMs);
@@ -276,7 +285,7 @@ void simulationFigures(int runs, int steps, int onlyAgents) {
 
     measureClockOverhead();
     g_counters = Counters{};
-    CrowdSimulation counted(full.world, full.maps, countingCode());
+    CrowdSimulation counted = crowdWith(full.world, full.maps, countingCode());
     counted.advance(30);
     g_counters = Counters{};
     counted.advance(steps);
@@ -307,7 +316,7 @@ void renderFigures(int frames) {
             state.actions.erase(std::remove_if(state.actions.begin(), state.actions.end(),
                                                [](const Action& a) { return a.kind == Action::Kind::Attack; }),
                                 state.actions.end());
-    CrowdSimulation crowd(e.world, e.maps, CrowdLabCode::fromLab10());
+    CrowdSimulation crowd(e.world, e.maps);
     crowd.advance(60);
 
     HeadlessContext context;

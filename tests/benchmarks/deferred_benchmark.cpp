@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
             return resources.loadProgram(vertex, fragment);
         };
         const stoa::DeferredPrograms programs = stoa::DeferredPrograms::load(load);
-        stoa::DeferredRenderer renderer(programs, stoa::DeferredLabCode::fromLab08());
+        stoa::DeferredRenderer renderer(programs);
 
         const stoa::PieceDrawList scene(stoa::acropolisAvenuePieces());
         stoa::WanderingLightsOptions lightOptions;

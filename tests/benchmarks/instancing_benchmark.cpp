@@ -30,7 +30,7 @@
 #include <stoa/gl/RenderPass.hpp>
 #include <stoa/image/Image.hpp>
 #include <stoa/image/ImageCompare.hpp>
-#include <stoa/math/Transforms.hpp>
+#include "lab01.hpp"
 #include <stoa/render/ForwardRenderer.hpp>
 #include <stoa/render/FrameUniforms.hpp>
 #include <stoa/render/InstancedMesh.hpp>

@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
             stoa::Program::fromFiles("shadows/depth_view.vert", "shadows/depth_view.frag", searchPath);
         const stoa::Program cascaded =
             stoa::Program::fromFiles("shadows/shadowed.vert", "shadows/cascaded.frag", searchPath);
-        stoa::ShadowRenderer renderer(depth, shadowed, mapView, stoa::ShadowLabCode::fromLab05());
+        stoa::ShadowRenderer renderer(depth, shadowed, mapView);
         renderer.setCascadeProgram(&cascaded);
 
         stoa::Scene scene;

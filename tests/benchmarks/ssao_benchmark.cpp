@@ -174,7 +174,7 @@ int main(int argc, char** argv) {
         const stoa::DeferredPrograms programs = stoa::DeferredPrograms::load(load);
         const stoa::Program& occlusion = load("basic/image.vert", "ssao/ssao.frag");
         const stoa::Program& blur = load("basic/image.vert", "ssao/blur.frag");
-        stoa::DeferredRenderer renderer(programs, stoa::DeferredLabCode::fromLab08());
+        stoa::DeferredRenderer renderer(programs);
         const stoa::PieceDrawList scene(stoa::acropolisPieces());
 
         stoa::SceneLighting lighting;   // as the lab

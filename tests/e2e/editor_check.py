@@ -26,7 +26,7 @@
       differs (exit 1).
 
 The camera is the editor's (stoa-editor passes the scene's camera to its
-case): an orbit camera (OrbitCamera::eyePosition(), lab 01) looking at the
+case): an orbit camera (eyePosition(OrbitState), lab 01) looking at the
 target with +Y up, a vertical field of view of 50 degrees (CameraRig's default)
 and the window's aspect ratio. The PNG reader handles what Stoa writes:
 8-bit RGB or RGBA, not interlaced.

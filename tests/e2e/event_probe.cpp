@@ -1,7 +1,6 @@
 // A lab that prints every window event and the first update step it gets, one
 // line each ("event KeyUp a", "event MouseDown Right at 100,80", "update 0.0167"),
-// and takes key H for itself (the app then leaves it alone); its agent-step
-// hook prints "agents step 0.0167" once:
+// and takes key H for itself (the app then leaves it alone):
 // tests/e2e/window_events.sh drives it under Xvfb with xdotool. It is a Lab
 // like any other, run by runLab(), so what it prints is what a lab receives.
 
@@ -61,19 +60,9 @@ public:
         }
     }
 
-    // The agent-step hook (lab 10's kind), which the window calls at each step.
-    const stoa::LabHooks* hooks() const override { return &m_hooks; }
-
 private:
     stoa::CameraRig m_cameras;
     int m_steps = 0;
-    int m_agentSteps = 0;
-    stoa::LabHooks m_hooks{nullptr, nullptr, [this](float seconds) {
-                               if (m_agentSteps++ == 0) {
-                                   std::printf("agents step %.4f\n", seconds);
-                                   std::fflush(stdout);
-                               }
-                           }};
 };
 
 } // namespace

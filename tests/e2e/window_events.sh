@@ -46,7 +46,6 @@ expect "^event Wheel -1"
 expect "^event MouseMove"
 expect "^event Resize 400x300"
 expect "^update 0.0"
-expect "^agents step 0.0"
 expect "^event KeyDown h$"
 [ "$(grep -c "Shaders reload by themselves" "$work/stdout.txt")" -eq 1 ] ||
   fail "the app printed its help for H, which the lab took"

@@ -6,7 +6,7 @@
 
 #include "catch.hpp"
 
-#include <stoa/math/Transforms.hpp>
+#include "lab01.hpp"
 #include <stoa/render/ShadowMapping.hpp>
 
 #include <glm/glm.hpp>

@@ -1,6 +1,6 @@
 // The course pipeline (stoa/render/CourseRenderer.hpp) on the GPU, with the
-// solutions' code of labs 04-10 wired as stoa-editor wires it
-// (EditorPipeline::labCode()), on small pictures (96x64) of a floor and a cube:
+// solutions' code of labs 04-10 handed to the framework as in stoa-editor (the
+// labs' hand_over.cpp), on small pictures (96x64) of a floor and a cube:
 //   - the views' names, both ways;
 //   - the culling statistics and each item's level, with a fake lab 06 (visible
 //     when x >= 0, level 1 for everything): one culled, one at level 1; nothing
@@ -126,9 +126,9 @@ const glm::vec3 kInTheOpen{2.5f, 0.0f, 2.5f};
 // context is made first and goes last.
 class CourseScene {
 public:
-    explicit CourseScene(stoa::CourseLabCode code = stoa::EditorPipeline::labCode())
+    CourseScene()
         : m_floorMesh(stoa::shapes::plane(20.0f)), m_cubeMesh(stoa::shapes::cube(2.0f)),
-          m_renderer(stoa::CoursePrograms::load(m_programs.loader()), std::move(code)), m_target(kSize.x, kSize.y) {
+          m_renderer(stoa::CoursePrograms::load(m_programs.loader())), m_target(kSize.x, kSize.y) {
         camera.setProjection(50.0f, 0.1f, 100.0f);
 
         stoa::CourseItem floor;
@@ -199,10 +199,12 @@ TEST_CASE("Course views: every name maps to its view and back", "[course]") {
 
 TEST_CASE("Course culling: the lab code's verdicts become stats() and levels()", "[course]") {
     // A fake lab 06: visible on the +x side only, level 1 for everything.
-    stoa::CourseLabCode code = stoa::EditorPipeline::labCode();
-    code.isVisible = [](const stoa::BoundingSphere& sphere, const glm::mat4&) { return sphere.center.x >= 0.0f; };
-    code.levelOf = [](const stoa::BoundingSphere&, const stoa::Camera&, int, int) { return 1; };
-    CourseScene scene(std::move(code));
+    stoa::StudentCodeScope scope;
+    stoa::studentCode().culling.isVisible = [](const stoa::BoundingSphere& sphere, const glm::mat4&) {
+        return sphere.center.x >= 0.0f;
+    };
+    stoa::studentCode().culling.levelOf = [](const stoa::BoundingSphere&, const stoa::Camera&, int, int) { return 1; };
+    CourseScene scene;
     scene.camera = stoa::OrbitCamera({0.0f, 0.5f, 0.0f}, 12.0f, 0.0f, 10.0f);   // both cubes in front of it
     scene.settings.shadowMapSize = 256;
     const auto cubeAt = [&scene](float x, float radius) {
@@ -344,7 +346,7 @@ TEST_CASE("Course views: albedo, cascades and levels of detail differ from the p
 TEST_CASE("DeferredSettings::beforePresent: once per final frame, into the light buffer", "[course]") {
     stoa::HeadlessContext context;
     ProgramStore programs;
-    stoa::DeferredRenderer renderer(stoa::DeferredPrograms::load(programs.loader()), stoa::DeferredLabCode::fromLab08());
+    stoa::DeferredRenderer renderer(stoa::DeferredPrograms::load(programs.loader()));
     stoa::Framebuffer target(kSize.x, kSize.y);
     const stoa::OrbitCamera camera({0.0f, 0.0f, 0.0f}, 5.0f, 0.0f, 20.0f);
     stoa::PointLight light;

@@ -1,6 +1,6 @@
 // Lab 10: CrowdSimulation (stoa/crowd/CrowdSimulation.hpp) on the example
 // worlds (assets/crowds/mars_explorers.xml and predators_prey.xml) and on
-// small worlds written here. The simulation runs on a CrowdLabCode of small
+// small worlds written here. The simulation runs on a CrowdFunctions of small
 // implementations written below (correct ones, independent of
 // solutions/10_crowds; being correct lab code, this file lives in tests/labs/,
 // which the student release leaves out). Checked:
@@ -90,14 +90,22 @@ float testHeight(const HeightField& field, glm::vec2 xz) {
     return field.heightMin + (field.heightMax - field.heightMin) * value;
 }
 
-/// The simulation needs only these four; the key-frame functions stay null.
-CrowdLabCode testCode() {
-    CrowdLabCode code;
+/// The simulation needs only these four; the key-frame functions stay unset.
+CrowdFunctions testCode() {
+    CrowdFunctions code;
     code.stepStateMachine = &testStateMachine;
     code.arbitrateLayers = &testLayers;
     code.walkableAt = &testWalkable;
     code.heightAt = &testHeight;
     return code;
+}
+
+/// A simulation on `code` (CrowdSimulation takes the student's functions from the
+/// table when it is made, so the table goes back as it was at once).
+CrowdSimulation crowdWith(const CrowdWorld& world, GroundMaps maps, const CrowdFunctions& code) {
+    StudentCodeScope scope;
+    studentCode().crowds = code;
+    return CrowdSimulation(world, std::move(maps));
 }
 
 struct Example {
@@ -200,8 +208,8 @@ TEST_CASE("Crowd: the same world and seed give bit-identical agents after 500 st
     for (const char* name : {"mars_explorers.xml", "predators_prey.xml"}) {
         INFO(name);
         const Example e = example(name);
-        CrowdSimulation first(e.world, e.maps, testCode());
-        CrowdSimulation second(e.world, e.maps, testCode());
+        CrowdSimulation first = crowdWith(e.world, e.maps, testCode());
+        CrowdSimulation second = crowdWith(e.world, e.maps, testCode());
         first.advance(500);
         for (int i = 0; i < 500; ++i) second.step();
         REQUIRE(first.stepCount() == 500);
@@ -213,9 +221,9 @@ TEST_CASE("Crowd: another seed gives other agents", "[crowd][simulation]") {
     for (const char* name : {"mars_explorers.xml", "predators_prey.xml"}) {
         INFO(name);
         Example e = example(name);
-        CrowdSimulation first(e.world, e.maps, testCode());
+        CrowdSimulation first = crowdWith(e.world, e.maps, testCode());
         e.world.seed += 1;
-        CrowdSimulation second(e.world, e.maps, testCode());
+        CrowdSimulation second = crowdWith(e.world, e.maps, testCode());
         first.advance(100);
         second.advance(100);
         int differ = 0;
@@ -228,7 +236,7 @@ TEST_CASE("Crowd: another seed gives other agents", "[crowd][simulation]") {
 TEST_CASE("Crowd: no agent ever stands on a texel the collision map blocks", "[crowd][simulation]") {
     for (const char* name : {"mars_explorers.xml", "predators_prey.xml"}) {
         const Example e = example(name);
-        CrowdSimulation crowd(e.world, e.maps, testCode());
+        CrowdSimulation crowd = crowdWith(e.world, e.maps, testCode());
         int moves = 0;
         for (int step = 0; step <= 400; ++step) {
             if (step > 0) crowd.step();
@@ -249,7 +257,7 @@ TEST_CASE("Crowd: no agent ever stands on a texel the collision map blocks", "[c
 
 TEST_CASE("Crowd: every living agent stands at heightAt(position) after each step", "[crowd][simulation]") {
     const Example e = example("predators_prey.xml");
-    CrowdSimulation crowd(e.world, e.maps, testCode());
+    CrowdSimulation crowd = crowdWith(e.world, e.maps, testCode());
     float lowest = 1e9f, highest = -1e9f;
     for (int step = 0; step < 1300; ++step) {
         std::vector<bool> wasAlive;
@@ -273,7 +281,7 @@ TEST_CASE("Crowd: every living agent stands at heightAt(position) after each ste
 // 1208, where the ground is 5.79 m).
 TEST_CASE("Crowd: a goat that comes back stands at heightAt of its new place", "[crowd][simulation]") {
     const Example e = example("predators_prey.xml");
-    CrowdSimulation crowd(e.world, e.maps, testCode());
+    CrowdSimulation crowd = crowdWith(e.world, e.maps, testCode());
     int comebacks = 0;
     for (int step = 1; step <= 1500; ++step) {
         std::vector<bool> wasAlive;
@@ -292,7 +300,7 @@ TEST_CASE("Crowd: a goat that comes back stands at heightAt of its new place", "
 
 TEST_CASE("Crowd: the explorers deliver samples and leave crumbs", "[crowd][simulation]") {
     const Example e = example("mars_explorers.xml");
-    CrowdSimulation crowd(e.world, e.maps, testCode());
+    CrowdSimulation crowd = crowdWith(e.world, e.maps, testCode());
     const int samplesAtStart = crowd.statistics().samplesOnGround;
     CHECK(samplesAtStart == 55);
     int mostCrumbs = 0, mostCarrying = 0;
@@ -311,7 +319,7 @@ TEST_CASE("Crowd: the explorers deliver samples and leave crumbs", "[crowd][simu
 
 TEST_CASE("Crowd: the wolves attack goats, and a goat comes back after respawnSeconds", "[crowd][simulation]") {
     const Example e = example("predators_prey.xml");
-    CrowdSimulation crowd(e.world, e.maps, testCode());
+    CrowdSimulation crowd = crowdWith(e.world, e.maps, testCode());
     const int goat = crowd.world().findType("goat");
     const double dt = crowd.world().step;
     const int stepsDead = static_cast<int>(std::ceil(CrowdSimulation::respawnSeconds / dt));
@@ -351,14 +359,14 @@ TEST_CASE("Crowd: a state or layer out of range from the lab code throws std::ou
     const CrowdWorld fsm = parseCrowdWorld(smallWorld(false), "fsm.xml");
     const CrowdWorld layers = parseCrowdWorld(smallWorld(true), "layers.xml");
     for (const int state : {1, -1, 1000}) {
-        CrowdLabCode code = testCode();
+        CrowdFunctions code = testCode();
         static int s_state;
         s_state = state;
         code.stepStateMachine = [](const StateMachine&, int, const CrowdSenses&, std::vector<const Action*>& actions) {
             actions.clear();
             return s_state;
         };
-        CrowdSimulation crowd(fsm, maps, code);
+        CrowdSimulation crowd = crowdWith(fsm, maps, code);
         INFO("stepStateMachine returns " << state);
         try {
             crowd.step();
@@ -370,11 +378,11 @@ TEST_CASE("Crowd: a state or layer out of range from the lab code throws std::ou
         }
     }
     for (const int layer : {1, -2, 77}) {
-        CrowdLabCode code = testCode();
+        CrowdFunctions code = testCode();
         static int s_layer;
         s_layer = layer;
         code.arbitrateLayers = [](const SubsumptionStack&, const CrowdSenses&) { return s_layer; };
-        CrowdSimulation crowd(layers, maps, code);
+        CrowdSimulation crowd = crowdWith(layers, maps, code);
         INFO("arbitrateLayers returns " << layer);
         try {
             crowd.step();
@@ -386,9 +394,9 @@ TEST_CASE("Crowd: a state or layer out of range from the lab code throws std::ou
         }
     }
     // -1 is "no layer fires": the agent stands still.
-    CrowdLabCode code = testCode();
+    CrowdFunctions code = testCode();
     code.arbitrateLayers = [](const SubsumptionStack&, const CrowdSenses&) { return -1; };
-    CrowdSimulation crowd(layers, maps, code);
+    CrowdSimulation crowd = crowdWith(layers, maps, code);
     const glm::vec2 before = crowd.agents()[0].position;
     crowd.advance(3);
     CHECK(crowd.agents()[0].state == -1);
@@ -403,7 +411,7 @@ TEST_CASE("Crowd: an area without walkable ground throws InputError naming the w
         const std::string text = smallWorld(false);
         const CrowdWorld world = parseCrowdWorld(text, "/somewhere/blocked_spawn.xml");
         try {
-            CrowdSimulation crowd(world, maps, testCode());
+            CrowdSimulation crowd = crowdWith(world, maps, testCode());
             FAIL("no exception");
         } catch (const InputError& error) {
             INFO(error.what());
@@ -417,7 +425,7 @@ TEST_CASE("Crowd: an area without walkable ground throws InputError naming the w
         const std::string text = smallWorld(false, "  <samples count=\"4\" x=\"1\" z=\"-1\" radius=\"2\"/>\n");
         const CrowdWorld world = parseCrowdWorld(text, "blocked_samples.xml");
         try {
-            CrowdSimulation crowd(world, maps, testCode());
+            CrowdSimulation crowd = crowdWith(world, maps, testCode());
             FAIL("no exception");
         } catch (const InputError& error) {
             INFO(error.what());
@@ -428,10 +436,10 @@ TEST_CASE("Crowd: an area without walkable ground throws InputError naming the w
     SECTION("a walkableAt() that refuses white ground is named") {
         const std::string text = smallWorld(false);
         const CrowdWorld world = parseCrowdWorld(text, "white.xml");
-        CrowdLabCode code = testCode();
+        CrowdFunctions code = testCode();
         code.walkableAt = [](const CollisionMap&, glm::vec2) { return false; };
         try {
-            CrowdSimulation crowd(world, flatGround({-10.0f, -10.0f}, {10.0f, 10.0f}, 20), code);
+            CrowdSimulation crowd = crowdWith(world, flatGround({-10.0f, -10.0f}, {10.0f, 10.0f}, 20), code);
             FAIL("no exception");
         } catch (const InputError& error) {
             INFO(error.what());
@@ -442,7 +450,7 @@ TEST_CASE("Crowd: an area without walkable ground throws InputError naming the w
     SECTION("the same area moved onto white ground is fine") {
         std::string text = smallWorld(false);
         text.replace(text.find("x=\"0\" z=\"0\""), 11, "x=\"7\" z=\"7\"");
-        CrowdSimulation crowd(parseCrowdWorld(text, "moved.xml"), maps, testCode());
+        CrowdSimulation crowd = crowdWith(parseCrowdWorld(text, "moved.xml"), maps, testCode());
         CHECK(crowd.agents().size() == 3);
     }
 }

@@ -2,7 +2,7 @@
 
 #include "catch.hpp"
 
-#include <stoa/math/Transforms.hpp>
+#include "lab01.hpp"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,6 +1,7 @@
 // Issue 10, items 2-4: the scene as data (transforms with a parent, bounds in
 // object and world space, draw lists, materials resolved when built), the
-// per-frame uniform block, instancing, and a lab hook a framework renderer calls.
+// per-frame uniform block, instancing, and the student's visibility test a
+// framework renderer calls.
 
 #include "catch.hpp"
 
@@ -13,8 +14,7 @@
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/RenderPass.hpp>
 #include <stoa/image/Image.hpp>
-#include <stoa/lab/LabHooks.hpp>
-#include <stoa/math/Transforms.hpp>
+#include <stoa/core/StudentCode.hpp>
 #include <stoa/render/ForwardRenderer.hpp>
 #include <stoa/render/FrameUniforms.hpp>
 #include <stoa/render/InstancedMesh.hpp>
@@ -69,7 +69,7 @@ TEST_CASE("Bounds: a mesh's box and sphere, carried into world space", "[scene]"
     CHECK(near(boundsOf(Mesh{}).box.max, glm::vec3(0.0f)));
 }
 
-TEST_CASE("Objects: a child follows its parent, and bounds carry into world space", "[scene][needs-lab-code]") {
+TEST_CASE("Objects: a child follows its parent, and bounds carry into world space", "[scene]") {
     HeadlessContext context;
     Scene scene;
     auto mesh = std::make_shared<const GpuMesh>(shapes::cube(1.0f));
@@ -145,8 +145,8 @@ TEST_CASE("FrameUniforms: FrameBlock matches the std140 block of common/frame.gl
     }
 }
 
-TEST_CASE("A framework renderer calls a lab's visibility hook, and draws everything without one",
-          "[scene][needs-lab-code]") {
+TEST_CASE("A framework renderer culls with the student's visibility test when asked to, and draws everything otherwise",
+          "[scene]") {
     HeadlessContext context;
     const Program program = Program::fromFiles("instanced/per_object.vert", "instanced/instanced.frag",
                                                {paths::shadersDir()});
@@ -176,16 +176,16 @@ TEST_CASE("A framework renderer calls a lab's visibility hook, and draws everyth
     CHECK(all.pixel(atLeft.x, atLeft.y) == glm::u8vec4(255, 0, 0, 255));    // the red cube on the left
     CHECK(all.pixel(atRight.x, atRight.y) == glm::u8vec4(0, 255, 0, 255));  // the green one on the right
 
-    // The lab's hook (lab 06 would test the sphere against the frustum's
-    // planes): here, only what lies left of x = 0.
-    LabHooks hooks;
+    // The student's visibility test (one would test the sphere against the
+    // frustum's planes): here, a double that keeps only what lies left of x = 0.
+    StudentCodeScope scope;
     std::vector<BoundingSphere> asked;
-    hooks.isVisible = [&](const BoundingSphere& sphere, const glm::mat4& viewProjection) {
+    studentCode().culling.isVisible = [&](const BoundingSphere& sphere, const glm::mat4& viewProjection) {
         asked.push_back(sphere);
         CHECK(viewProjection == camera.projectionMatrix(2.0f) * camera.viewMatrix());
         return sphere.center.x < 0.0f;
     };
-    renderer.hooks = &hooks;
+    renderer.cull = true;
     Image culled = render();
     REQUIRE(asked.size() == 2);
     CHECK(near(asked[0].center, {-1.0f, 0.0f, 0.0f}));
@@ -195,52 +195,14 @@ TEST_CASE("A framework renderer calls a lab's visibility hook, and draws everyth
     CHECK(culled.pixel(atLeft.x, atLeft.y) == glm::u8vec4(255, 0, 0, 255));
     CHECK(culled.pixel(atRight.x, atRight.y) == glm::u8vec4(0, 0, 0, 255));
 
-    // Unset hooks are no hooks.
-    hooks.isVisible = nullptr;
+    // Culling off: everything is drawn, and the test is not asked.
+    renderer.cull = false;
     render();
+    CHECK(asked.size() == 2);
     CHECK(renderer.drawnCount() == 2);
 }
 
-TEST_CASE("A framework renderer shades with the point lights a lab's light-culling hook keeps",
-          "[scene][needs-lab-code]") {
-    HeadlessContext context;
-    const Program program = Program::fromFiles("instanced/per_object.vert", "instanced/instanced.frag",
-                                               {paths::shadersDir()});
-    Scene scene;
-    scene.ambient = glm::vec3(0.0f);
-    scene.pointLights.push_back({{0.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 0.0f}});
-    scene.pointLights.push_back({{0.0f, 2.0f, 0.0f}, {0.0f, 1.0f, 0.0f}});
-    scene.pointLights.push_back({{0.0f, 3.0f, 0.0f}, {0.0f, 0.0f, 1.0f}});
-    scene.add(std::make_unique<MeshObject>(std::make_shared<const GpuMesh>(shapes::cube(1.0f))));
-    const OrbitCamera camera({0.0f, 0.0f, 0.0f}, 6.0f, 0.0f, 0.0f);
-    Framebuffer target(16, 16);
-    ForwardRenderer renderer;
-    LabHooks hooks;
-    int calls = 0;
-    hooks.cullLights = [&](const std::vector<PointLight>& lights, const Camera&) {
-        ++calls;
-        CHECK(lights.size() == 3);
-        return std::vector<int>{2, 0, 7};   // 7 does not exist: skipped
-    };
-    renderer.hooks = &hooks;
-    target.bind();
-    renderer.render(scene, camera, program, {16, 16});
-    CHECK(calls == 1);
-
-    // The lights the frame shades with are those of the uniform block it
-    // uploaded: read it back from the buffer bound at kBinding.
-    GLint buffer = 0;
-    glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, FrameUniforms::kBinding, &buffer);
-    REQUIRE(buffer != 0);
-    FrameBlock block{};
-    glBindBuffer(GL_UNIFORM_BUFFER, static_cast<GLuint>(buffer));
-    glGetBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameBlock), &block);
-    CHECK(block.pointLightCount == 2);
-    CHECK(block.pointLights[0].color == glm::vec3(0.0f, 0.0f, 1.0f));
-    CHECK(block.pointLights[1].color == glm::vec3(1.0f, 0.0f, 0.0f));
-}
-
-TEST_CASE("InstancedMesh: per-instance transforms and colours in one draw", "[scene][needs-lab-code]") {
+TEST_CASE("InstancedMesh: per-instance transforms and colours in one draw", "[scene]") {
     HeadlessContext context;
     const Program program = Program::fromFiles("instanced/instanced.vert", "instanced/instanced.frag",
                                                {paths::shadersDir()});

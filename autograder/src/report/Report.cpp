@@ -9,7 +9,7 @@ namespace stoa::grader {
 namespace {
 
 // The lab a not-attempted case waits for: the one its stub belongs to when the
-// lab program names it ("not implemented: FirstPersonCamera::forward() (lab
+// lab program names it ("not implemented: forward(FirstPersonState) (lab
 // 01_transforms)", NotImplemented::describe()), else the case's own lab.
 std::string labToStartWith(const GradeResult& result) {
     const std::string marker = " (lab ";

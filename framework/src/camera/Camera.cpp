@@ -1,13 +1,14 @@
 #include <stoa/camera/Camera.hpp>
 #include <stoa/core/Assert.hpp>
+#include <stoa/core/StudentCode.hpp>
 
 namespace stoa {
 
-glm::mat4 Camera::viewMatrix() const { return lookAtMatrix(eyePosition(), lookTarget(), upVector()); }
+glm::mat4 Camera::viewMatrix() const { return studentCode().transforms.lookAtMatrix(eyePosition(), lookTarget(), upVector()); }
 
 glm::mat4 Camera::projectionMatrix(float aspect) const {
     STOA_ASSERT(aspect > 0.0f, "Camera::projectionMatrix(): aspect must be width / height of a non-empty viewport");
-    return perspectiveMatrix(m_fovYDegrees, aspect, m_near, m_far);
+    return studentCode().transforms.perspectiveMatrix(m_fovYDegrees, aspect, m_near, m_far);
 }
 
 void Camera::setProjection(float fovYDegrees, float near, float far) {

@@ -126,8 +126,8 @@ private:
     std::size_t m_index;
 };
 
-CrowdSimulation::CrowdSimulation(const CrowdWorld& world, GroundMaps maps, CrowdLabCode code)
-    : m_world(world), m_maps(std::move(maps)), m_code(code) {
+CrowdSimulation::CrowdSimulation(const CrowdWorld& world, GroundMaps maps)
+    : m_world(world), m_maps(std::move(maps)), m_code(studentCode().crowds) {
     for (const Behaviour& behaviour : m_world.behaviours) {
         const auto collect = [&](const std::vector<Action>& actions, const std::vector<Condition>& conditions) {
             for (const Action& action : actions)

@@ -129,8 +129,6 @@ public:
     void update(float seconds, const InputState& input) override {
         runStudentCode([&] { m_lab.activeCamera().update(input, seconds); });
         runStudentCode([&] { m_lab.update(seconds); });
-        if (const LabHooks* hooks = m_lab.hooks(); hooks && hooks->stepAgents)
-            runStudentCode([&] { hooks->stepAgents(seconds); });
     }
 
     void mouseDragged(glm::vec2 delta, const InputState& input) override {

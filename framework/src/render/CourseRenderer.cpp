@@ -3,6 +3,7 @@
 #include <stoa/camera/Camera.hpp>
 #include <stoa/core/Assert.hpp>
 #include <stoa/core/Paths.hpp>
+#include <stoa/core/StudentCode.hpp>
 #include <stoa/crowd/CrowdSimulation.hpp>
 #include <stoa/geometry/Material.hpp>
 #include <stoa/geometry/Shapes.hpp>
@@ -26,6 +27,7 @@ constexpr int kNormalMapUnit = MeshObject::kFirstFreeTextureUnit;   // beside th
 constexpr int kSkyUnit = 3;
 constexpr int kFirstCascadeUnit = 12;   // 12..15: clear of the G-buffer's, the tiles' and the occlusion's
 constexpr float kCascadeLambda = 0.75f;
+constexpr int kOcclusionKernelSize = 32;   // samples of the student's SSAO kernel
 constexpr float kShininess = 24.0f;     // DeferredSettings' default, for the sun as for the point lights
 
 // Green, yellow, orange, red: level 0 (full detail) to 3, as lab 06's overview.
@@ -92,12 +94,14 @@ CoursePrograms CoursePrograms::load(const Loader& load) {
     return programs;
 }
 
-CourseRenderer::CourseRenderer(const CoursePrograms& programs, CourseLabCode code)
-    : m_programs(programs), m_code(std::move(code)),
-      m_deferred(std::make_unique<DeferredRenderer>(programs.deferred, m_code.deferred)),
+CourseRenderer::CourseRenderer(const CoursePrograms& programs)
+    : m_programs(programs),
+      m_deferred(std::make_unique<DeferredRenderer>(programs.deferred)),
       m_occlusion(std::make_unique<AmbientOcclusionPass>(*programs.occlusion, *programs.blur)),
       m_sky(CubeMap::fromFolder(paths::assetsDir() / "sky")), m_skyCube(shapes::cube(2.0f)) {
-    if (!m_code.occlusionKernel.empty()) m_occlusion->setKernel(m_code.occlusionKernel, m_code.occlusionNoise);
+    const OcclusionFunctions& occlusion = studentCode().occlusion;   // the student's samples, where handed over
+    if (occlusion.ssaoKernel && occlusion.ssaoNoise)
+        m_occlusion->setKernel(occlusion.ssaoKernel(kOcclusionKernelSize, 1), occlusion.ssaoNoise(2));
 }
 
 CourseRenderer::~CourseRenderer() = default;
@@ -190,18 +194,19 @@ void CourseRenderer::cull(const std::vector<CourseItem>& items, const Camera& ca
     m_levels.assign(items.size(), 0);
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     const glm::mat4 viewProjection = camera.projectionMatrix(aspect) * camera.viewMatrix();
+    const CullingFunctions& culling = studentCode().culling;
     for (std::size_t i = 0; i < items.size(); ++i) {
         const CourseItem& item = items[i];
         STOA_ASSERT(!item.levels.empty() && item.levels.front() != nullptr, "CourseItem: needs at least one level");
         const int levelCount = static_cast<int>(item.levels.size());
         int level = 0;
         if (settings.culling && item.sphere.radius > 0.0f) {
-            if (m_code.isVisible && !m_code.isVisible(item.sphere, viewProjection)) {   // the student's
+            if (culling.isVisible && !culling.isVisible(item.sphere, viewProjection)) {   // the student's
                 m_levels[i] = -2;
                 ++m_stats.culled;
                 continue;
             }
-            if (m_code.levelOf) level = m_code.levelOf(item.sphere, camera, size.y, levelCount);   // the student's
+            if (culling.levelOf) level = culling.levelOf(item.sphere, camera, size.y, levelCount);   // the student's
             if (level < 0) {
                 m_levels[i] = -1;
                 ++m_stats.tooSmall;
@@ -218,7 +223,8 @@ void CourseRenderer::renderCascades(const std::vector<CourseItem>& items, const 
                                     const Camera& camera, glm::ivec2 size, const CourseSettings& settings,
                                     const CourseCrowd* crowd) {
     m_cascadeCount = 0;
-    const ShadowLabCode& code = m_code.shadows;
+    const ShadowFunctions& code = studentCode().shadows;
+    const CullingFunctions& culling = studentCode().culling;
     if (!settings.shadows || !code.cascadeSplits || !code.frustumSliceCorners || !code.cascadeLightMatrix) return;
     const int count = std::min(std::max(settings.cascades, 1), ShadowRenderer::kMaxCascades);
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
@@ -252,7 +258,7 @@ void CourseRenderer::renderCascades(const std::vector<CourseItem>& items, const 
         for (std::size_t j = 0; j < items.size(); ++j) {
             const CourseItem& item = items[j];
             const bool cullable = settings.culling && item.sphere.radius > 0.0f;
-            if (cullable && m_code.isVisible && !m_code.isVisible(item.sphere, matrix)) continue;   // not in this cascade
+            if (cullable && culling.isVisible && !culling.isVisible(item.sphere, matrix)) continue;   // not in this cascade
             // Seen by the camera: its level there; unseen (a shadow from outside the view): the coarsest.
             const int level = m_levels[j] >= 0 ? m_levels[j] : static_cast<int>(item.levels.size()) - 1;
             depth.set("uModel", item.model);

@@ -99,7 +99,7 @@ std::unique_ptr<Md2GpuModel> uploadMd2(const std::filesystem::path& modelPath, c
     return gpu;
 }
 
-Mesh md2PoseMesh(const Md2Model& model, const Md2FramePair& frames, const CrowdLabCode& code) {
+Mesh md2PoseMesh(const Md2Model& model, const Md2FramePair& frames, const CrowdFunctions& code) {
     STOA_ASSERT(frames.first >= 0 && frames.second >= 0 && frames.first < static_cast<int>(model.frames.size()) &&
                     frames.second < static_cast<int>(model.frames.size()),
                 "md2PoseMesh(): a frame index is outside the model's frames");
@@ -203,7 +203,7 @@ void CrowdRenderer::drawScenery(const Program& program, bool depthOnly, bool fla
 }
 
 void CrowdRenderer::uploadAgents(const CrowdSimulation& simulation, const CrowdDrawOptions& options) {
-    const CrowdLabCode& code = simulation.code();
+    const CrowdFunctions& code = simulation.code();
     const std::vector<CrowdAgent>& agents = simulation.agents();
     std::vector<Instance> instances;
     for (std::size_t type = 0; type < m_models.size(); ++type) {

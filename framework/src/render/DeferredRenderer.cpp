@@ -1,5 +1,6 @@
 #include <stoa/camera/Camera.hpp>
 #include <stoa/core/Assert.hpp>
+#include <stoa/core/StudentCode.hpp>
 #include <stoa/geometry/Shapes.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/RenderPass.hpp>
@@ -68,9 +69,8 @@ const char* toString(DeferredView view) {
     return "?";
 }
 
-DeferredRenderer::DeferredRenderer(const DeferredPrograms& programs, DeferredLabCode code)
+DeferredRenderer::DeferredRenderer(const DeferredPrograms& programs)
     : m_programs(programs),
-      m_code(std::move(code)),
       m_sphere(shapes::sphere(1.0f, kSphereSlices, kSphereStacks)),
       m_lightTexels(GL_RGBA32F),
       m_tileOffsets(GL_R32I),
@@ -233,7 +233,7 @@ void DeferredRenderer::uploadLights(const std::vector<PointLight>& lights, const
 
 void DeferredRenderer::drawVolumes(const std::vector<PointLight>& lights, const DeferredSettings& settings, bool countOnly) {
     if (lights.empty()) return;   // nothing to add
-    const RenderState state = m_code.lightVolumeState();   // the student's
+    const RenderState state = studentCode().deferred.lightVolumeState();   // the student's
     PassDescription pass = passInto(m_lightBuffer, state);
     beginPass(pass);
     const Program& program = *m_programs.lightVolume;
@@ -249,7 +249,7 @@ void DeferredRenderer::drawVolumes(const std::vector<PointLight>& lights, const 
     const GLint attenuation = program.uniformLocation("uLightAttenuation");
     const GLint reachLocation = program.uniformLocation("uLightReach");
     for (const PointLight& light : lights) {
-        const float reach = m_code.lightReach(light, settings.cutoff);   // the student's
+        const float reach = studentCode().deferred.lightReach(light, settings.cutoff);   // the student's
         if (!(reach > 0.0f)) continue;
         const glm::vec3 centre = glm::vec3(m_view * glm::vec4(light.position, 1.0f));
         if (centre.z - reach * m_sphereEnclosing > -m_near) continue;   // wholly in front of the near plane: nothing to see
@@ -297,14 +297,14 @@ void DeferredRenderer::drawTiled(const std::vector<PointLight>& lights, const Sc
     reaches.reserve(lights.size());
     spheres.reserve(lights.size());
     for (const PointLight& light : lights) {
-        const float reach = m_code.lightReach(light, settings.cutoff);   // the student's
+        const float reach = studentCode().deferred.lightReach(light, settings.cutoff);   // the student's
         reaches.push_back(reach);
         spheres.push_back({glm::vec3(m_view * glm::vec4(light.position, 1.0f)), reach});
     }
     TileGrid grid;
     grid.viewport = m_size;
     grid.tileSize = settings.tileSize;
-    m_tiles = m_code.buildTileLightLists(spheres, m_projection, m_near, grid, tileDepthRanges(grid));   // the student's
+    m_tiles = studentCode().deferred.buildTileLightLists(spheres, m_projection, m_near, grid, tileDepthRanges(grid));   // the student's
     STOA_ASSERT(m_tiles.offsets.size() == static_cast<std::size_t>(grid.tileCount()) + 1,
                 "buildTileLightLists() must return tileCount() + 1 offsets");
     STOA_ASSERT(static_cast<std::size_t>(m_tiles.offsets.back()) == m_tiles.lights.size(),

@@ -1,9 +1,9 @@
 #include <stoa/camera/Camera.hpp>
 #include <stoa/core/Assert.hpp>
+#include <stoa/core/StudentCode.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/RenderPass.hpp>
-#include <stoa/lab/LabHooks.hpp>
 #include <stoa/render/ForwardRenderer.hpp>
 #include <stoa/render/FrameUniforms.hpp>
 #include <stoa/render/ObjectUniforms.hpp>
@@ -39,18 +39,6 @@ void ForwardRenderer::render(const Scene& scene, const Camera& camera, const Pro
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     if (!m_frame) m_frame = std::make_unique<FrameUniforms>();
     FrameBlock block = FrameUniforms::blockFor(camera, aspect, scene);
-    if (hooks && hooks->cullLights) {
-        // The lab's light culling picks which point lights this frame shades with.
-        const std::vector<int> kept = hooks->cullLights(scene.pointLights, camera);
-        int count = 0;
-        for (int index : kept) {
-            if (index < 0 || index >= static_cast<int>(scene.pointLights.size()) || count == Scene::kMaxPointLights)
-                continue;
-            const PointLight& light = scene.pointLights[static_cast<std::size_t>(index)];
-            block.pointLights[count++] = {light.position, 0.0f, light.color, 0.0f, light.attenuation, 0.0f};
-        }
-        block.pointLightCount = count;
-    }
     m_frame->update(block);
     m_frame->bind();
     const ObjectUniforms& uniforms = uniformsFor(program);
@@ -60,9 +48,9 @@ void ForwardRenderer::render(const Scene& scene, const Camera& camera, const Pro
     m_drawn = m_culled = 0;
     const glm::mat4 viewProjection = block.projection * block.view;
     for (const DrawItem& item : m_drawList) {
-        if (hooks && hooks->isVisible) {
+        if (cull) {
             const Bounds world = transformed(item.mesh->bounds(), item.model);
-            if (!hooks->isVisible(world.sphere, viewProjection)) {
+            if (!studentCode().culling.isVisible(world.sphere, viewProjection)) {
                 ++m_culled;
                 continue;
             }

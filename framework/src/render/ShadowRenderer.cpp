@@ -1,5 +1,6 @@
 #include <stoa/camera/Camera.hpp>
 #include <stoa/core/Assert.hpp>
+#include <stoa/core/StudentCode.hpp>
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/StateCache.hpp>
@@ -33,15 +34,8 @@ void ShadowRenderer::afterStudentPass(GLuint target) {
 }
 
 ShadowRenderer::ShadowRenderer(const Program& depthProgram, const Program& shadowedProgram,
-                               const Program& mapViewProgram, ShadowLabCode code)
-    : m_code(std::move(code)),
-      m_depthProgram(depthProgram),
-      m_shadowedProgram(shadowedProgram),
-      m_mapViewProgram(mapViewProgram) {
-    STOA_ASSERT(m_code.renderShadowPass != nullptr,
-                "ShadowRenderer(): ShadowLabCode::renderShadowPass is not set. Pass ShadowLabCode::fromLab05() "
-                "from a program that links lab 05's code.");
-}
+                               const Program& mapViewProgram)
+    : m_depthProgram(depthProgram), m_shadowedProgram(shadowedProgram), m_mapViewProgram(mapViewProgram) {}
 
 void ShadowRenderer::renderShadowMap(const Scene& scene, const ShadowLight& light, int mapSize) {
     STOA_ASSERT(mapSize > 0, "ShadowRenderer::renderShadowMap(): the map needs at least one texel per side");
@@ -54,7 +48,7 @@ void ShadowRenderer::renderShadowMap(const Scene& scene, const ShadowLight& ligh
     // The lab draws into whatever the app bound (the window, or the headless
     // target): remember it (the StateCache knows it), since the depth pass binds the map.
     const GLuint previous = StateCache::current().drawFramebuffer();
-    m_code.renderShadowPass(scene, m_shadowMap, m_depthProgram, light.lightSpaceMatrix);
+    studentCode().shadows.renderShadowPass(scene, m_shadowMap, m_depthProgram, light.lightSpaceMatrix);
     afterStudentPass(previous);
 }
 
@@ -121,9 +115,8 @@ void ShadowRenderer::renderCascaded(const Scene& scene, const Camera& camera, gl
     const glm::vec3 sunDirection = scene.directionalLights.front().direction;
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     const float far = std::min(settings.cascades.far, camera.farPlane());
-    STOA_ASSERT(m_code.cascadeSplits && m_code.frustumSliceCorners && m_code.cascadeLightMatrix,
-                "ShadowRenderer::render(): cascades need ShadowLabCode's cascade functions (ShadowLabCode::fromLab05())");
-    m_splits = m_code.cascadeSplits(camera.nearPlane(), far, count, settings.cascades.lambda);
+    const ShadowFunctions& code = studentCode().shadows;
+    m_splits = code.cascadeSplits(camera.nearPlane(), far, count, settings.cascades.lambda);
     STOA_ASSERT(m_splits.size() == static_cast<std::size_t>(count) + 1,
                 "cascadeSplits(): must return count + 1 depths, near first and far last");
 
@@ -133,16 +126,16 @@ void ShadowRenderer::renderCascaded(const Scene& scene, const Camera& camera, gl
     for (int i = 0; i < count && withMaps; ++i) {
         const auto cascade = static_cast<std::size_t>(i);
         const std::array<glm::vec3, 8> corners =
-            m_code.frustumSliceCorners(view, camera.fovYDegrees(), aspect, m_splits[cascade], m_splits[cascade + 1]);
+            code.frustumSliceCorners(view, camera.fovYDegrees(), aspect, m_splits[cascade], m_splits[cascade + 1]);
         m_cascadeMatrices[cascade] =
-            m_code.cascadeLightMatrix(sunDirection, corners, settings.mapSize, light.sceneMin, light.sceneMax);
+            code.cascadeLightMatrix(sunDirection, corners, settings.mapSize, light.sceneMin, light.sceneMax);
         if (m_cascadeMaps[cascade].width() != settings.mapSize) {
             FramebufferOptions options;
             options.color = false;
             options.depthTexture = true;
             m_cascadeMaps[cascade] = Framebuffer(settings.mapSize, settings.mapSize, options);
         }
-        m_code.renderShadowPass(scene, m_cascadeMaps[cascade], m_depthProgram, m_cascadeMatrices[cascade]);
+        code.renderShadowPass(scene, m_cascadeMaps[cascade], m_depthProgram, m_cascadeMatrices[cascade]);
     }
     afterStudentPass(previous);
 

@@ -1,8 +1,8 @@
 #include <stoa/camera/Camera.hpp>
 #include <stoa/core/Assert.hpp>
+#include <stoa/core/StudentCode.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
-#include <stoa/math/Transforms.hpp>
 #include <stoa/render/ObjectUniforms.hpp>
 #include <stoa/scene/Object.hpp>
 
@@ -17,7 +17,7 @@ void Object::setParent(const Object* parent) {
     m_parent = parent;
 }
 
-glm::mat4 Object::localMatrix() const { return stoa::modelMatrix(position, rotationDegrees, scale); }
+glm::mat4 Object::localMatrix() const { return studentCode().transforms.modelMatrix(position, rotationDegrees, scale); }
 
 glm::mat4 Object::modelMatrix() const {
     return m_parent ? m_parent->modelMatrix() * localMatrix() : localMatrix();

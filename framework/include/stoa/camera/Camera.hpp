@@ -3,7 +3,7 @@
 // Subclasses keep a few independent parameters (an orbit's yaw and pitch, a
 // walker's position) and derive the rest, so nothing stored can disagree.
 
-#include <stoa/math/Transforms.hpp>
+#include <glm/mat4x4.hpp>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -23,7 +23,7 @@ public:
     /// World up used to orient the view (+Y).
     glm::vec3 upVector() const { return {0.0f, 1.0f, 0.0f}; }
 
-    /// World -> view: lookAtMatrix(eyePosition(), lookTarget(), upVector()).
+    /// World -> view: the student's lookAtMatrix(eyePosition(), lookTarget(), upVector()).
     glm::mat4 viewMatrix() const;
     /// View -> clip for a viewport of the given aspect ratio (width / height).
     glm::mat4 projectionMatrix(float aspect) const;

@@ -24,7 +24,7 @@ public:
     const std::string& lab() const { return m_lab; }
 
     /// What a lab program says of it: the function, and its lab when that is
-    /// not `runningLab` ("FirstPersonCamera::forward() (lab 01_transforms)"),
+    /// not `runningLab` ("forward(FirstPersonState) (lab 01_transforms)"),
     /// so that a student sees which earlier lab a later one waits for.
     std::string describe(const std::string& runningLab) const;
 

@@ -10,8 +10,9 @@
 //   md2_blend.cpp   md2FramesAt        which two key frames a time falls between
 //                   blendMd2Frames     the pose between them
 //
-// CrowdSimulation and CrowdRenderer reach them through a CrowdLabCode, so a
-// program that does not draw crowds never needs lab 10's code.
+// CrowdSimulation and CrowdRenderer reach them through the framework's
+// student-code table (StudentCode::crowds), so a program that does not draw
+// crowds never needs lab 10's code.
 
 #include <stoa/crowd/CrowdWorld.hpp>
 #include <stoa/crowd/GroundMaps.hpp>
@@ -73,22 +74,5 @@ Md2FramePair md2FramesAt(const Md2Animation& animation, float seconds, float fra
 /// normals linearly and then normalized. `positions` and `normals` are resized.
 void blendMd2Frames(const Md2Frame& first, const Md2Frame& second, float t, std::vector<glm::vec3>& positions,
                     std::vector<glm::vec3>& normals);
-
-struct CrowdLabCode {
-    int (*stepStateMachine)(const StateMachine&, int, const CrowdSenses&, std::vector<const Action*>&) = nullptr;
-    int (*arbitrateLayers)(const SubsumptionStack&, const CrowdSenses&) = nullptr;
-    bool (*walkableAt)(const CollisionMap&, glm::vec2) = nullptr;
-    float (*heightAt)(const HeightField&, glm::vec2) = nullptr;
-    Md2FramePair (*md2FramesAt)(const Md2Animation&, float, float) = nullptr;
-    void (*blendMd2Frames)(const Md2Frame&, const Md2Frame&, float, std::vector<glm::vec3>&,
-                           std::vector<glm::vec3>&) = nullptr;
-
-    /// The six as the calling program links them. Inline, so that only a
-    /// program that calls it needs lab 10's code.
-    static CrowdLabCode fromLab10() {
-        return {&stoa::stepStateMachine, &stoa::arbitrateLayers, &stoa::walkableAt,
-                &stoa::heightAt,         &stoa::md2FramesAt,     &stoa::blendMd2Frames};
-    }
-};
 
 } // namespace stoa

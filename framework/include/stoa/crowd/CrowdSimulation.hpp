@@ -12,9 +12,10 @@
 // run: the same world gives the same crowd on every machine. Heights never feed
 // back into the motion. No OpenGL here.
 //
-//   CrowdSimulation crowd(world, loadGroundMaps(world.ground, world.file), CrowdLabCode::fromLab10());
+//   CrowdSimulation crowd(world, loadGroundMaps(world.ground, world.file));
 //   crowd.advance(300);   // ten seconds at 30 steps per second
 
+#include <stoa/core/StudentCode.hpp>
 #include <stoa/crowd/CrowdLab.hpp>
 #include <stoa/crowd/CrowdWorld.hpp>
 #include <stoa/crowd/GroundMaps.hpp>
@@ -69,14 +70,14 @@ public:
     /// Places the agents and samples (seeded, on walkable ground) and runs no
     /// step. Throws InputError naming the world file and a <spawn> or
     /// <samples> line when no walkable point is found in its area.
-    CrowdSimulation(const CrowdWorld& world, GroundMaps maps, CrowdLabCode code);
+    CrowdSimulation(const CrowdWorld& world, GroundMaps maps);
 
     void step();
     void advance(int steps);
 
     const CrowdWorld& world() const { return m_world; }
     const GroundMaps& maps() const { return m_maps; }
-    const CrowdLabCode& code() const { return m_code; }
+    const CrowdFunctions& code() const { return m_code; }
     const std::vector<CrowdAgent>& agents() const { return m_agents; }
     const std::vector<glm::vec2>& samples() const { return m_samples; }   // on the ground
     const std::vector<glm::vec2>& crumbs() const { return m_crumbs; }
@@ -126,7 +127,7 @@ private:
 
     CrowdWorld m_world;
     GroundMaps m_maps;
-    CrowdLabCode m_code;
+    CrowdFunctions m_code;   // the student's, as the table held them when the crowd was made
     std::vector<CrowdAgent> m_agents;
     std::vector<glm::vec2> m_samples;
     std::vector<glm::vec2> m_crumbs;

@@ -5,7 +5,6 @@
 
 #include <stoa/app/Input.hpp>
 #include <stoa/lab/PropertyCheck.hpp>
-#include <stoa/lab/LabHooks.hpp>
 
 #include <glm/vec2.hpp>
 
@@ -75,9 +74,6 @@ public:
     /// Escape in the window: true to quit. An editor with unsaved edits says
     /// so and returns false; a second Escape then quits (its choice).
     virtual bool quitRequested() { return true; }
-    /// The lab's hooks into the framework (LabHooks.hpp: visibility, light
-    /// culling, agent step), or nullptr for none (labs 01-05).
-    virtual const LabHooks* hooks() const { return nullptr; }
     /// Lines added to the window's key help, e.g. "f  toggle facet normals".
     virtual std::vector<std::string> keyHelp() const { return {}; }
     /// Runs the property check `spec.check` (a case with a `check` key, PropertyCheck.hpp),

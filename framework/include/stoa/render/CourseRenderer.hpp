@@ -15,10 +15,13 @@
 //              what glows by itself, given by the caller (lab 07's sparks)
 //   present    the lit picture (or a debug view) into the bound framebuffer
 //
-// The students' functions come in through CourseLabCode, so the framework links
-// without them; their GLSL comes in through the programs' includes.
+// The students' functions come in through the framework's student-code table
+// (StudentCode: culling, shadows, deferred, occlusion), so the framework links
+// without them; an unset culling or cascade function switches its pass off,
+// so a program without those labs still draws. Their GLSL comes in through
+// the programs' includes.
 //
-//   CourseRenderer renderer(CoursePrograms::load(loader), code);
+//   CourseRenderer renderer(CoursePrograms::load(loader));
 //   renderer.render(items, lighting, camera, size, settings, nullptr);
 //   std::printf("%.1f ms shadows\n", 1e3 * renderer.stats().seconds[int(CoursePass::Shadows)]);
 #include <stoa/geometry/Bounds.hpp>
@@ -132,19 +135,6 @@ struct CourseStats {
     double totalSeconds = 0.0;
 };
 
-/// The students' functions the passes call. Unset ones switch their pass off
-/// (no culling, no cascades), so a track without those labs still draws.
-struct CourseLabCode {
-    /// Lab 06: false when `sphere` (world) lies outside what `viewProjection` sees.
-    std::function<bool(const BoundingSphere& sphere, const glm::mat4& viewProjection)> isVisible;
-    /// Lab 06: the level to draw out of `levelCount` (-1: too small to draw).
-    std::function<int(const BoundingSphere& sphere, const Camera& camera, int viewportHeight, int levelCount)> levelOf;
-    ShadowLabCode shadows;            // lab 05
-    DeferredLabCode deferred;         // lab 08
-    std::vector<glm::vec3> occlusionKernel;   // lab 09's ssaoKernel() and ssaoNoise()
-    std::vector<glm::vec3> occlusionNoise;
-};
-
 struct CoursePrograms {
     using Loader = std::function<const Program&(const std::string& vertex, const std::string& fragment)>;
     /// Loads every program the passes use (through `load`, which keeps them).
@@ -166,7 +156,7 @@ struct CoursePrograms {
 class CourseRenderer {
 public:
     /// Needs a current context; loads the sky's cube map from assets/sky.
-    CourseRenderer(const CoursePrograms& programs, CourseLabCode code);
+    explicit CourseRenderer(const CoursePrograms& programs);
     ~CourseRenderer();
 
     /// What glows by itself (lab 07's sparks): drawn after the sky into the
@@ -197,7 +187,6 @@ private:
     void endPass(CoursePass pass, bool timed);
 
     CoursePrograms m_programs;
-    CourseLabCode m_code;
     std::unique_ptr<DeferredRenderer> m_deferred;
     std::unique_ptr<AmbientOcclusionPass> m_occlusion;
     std::array<Framebuffer, ShadowRenderer::kMaxCascades> m_cascadeMaps;

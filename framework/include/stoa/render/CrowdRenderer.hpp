@@ -91,7 +91,7 @@ std::unique_ptr<Md2GpuModel> uploadMd2(const std::filesystem::path& model, const
 
 /// A mesh of the pose between two frames, one vertex per triangle corner,
 /// from the student's blendMd2Frames() (through `code`).
-Mesh md2PoseMesh(const Md2Model& model, const Md2FramePair& frames, const CrowdLabCode& code);
+Mesh md2PoseMesh(const Md2Model& model, const Md2FramePair& frames, const CrowdFunctions& code);
 
 class CrowdRenderer {
 public:

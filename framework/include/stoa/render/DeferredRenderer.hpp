@@ -14,11 +14,11 @@
 // into a 16-bit float light buffer, then copied, clamped, into the framebuffer
 // bound when render() is called; the tiled pass straight into that framebuffer. Lab 08's app and benchmark and lab 09's app draw through it.
 //
-// The student's functions (DeferredShading.hpp) reach it at run time, as
-// DeferredLabCode, from the program that links them; the student's GLSL
-// (08_deferred/g_buffer.glsl) is in the programs the lab loads.
+// The student's functions reach it through the framework's student-code table
+// (StudentCode::deferred), which the program fills at start-up; the student's
+// GLSL (08_deferred/g_buffer.glsl) is in the programs the lab loads.
 //
-//   DeferredRenderer renderer(programs, DeferredLabCode::fromLab08());   // in lab 08's program
+//   DeferredRenderer renderer(programs);
 //   renderer.render(drawList, lights, lighting, camera, size, settings);
 
 #include <stoa/gl/BufferTexture.hpp>
@@ -80,21 +80,6 @@ struct DeferredPrograms {
     const Program* views = nullptr;         // basic/image.vert + deferred/views.frag
 };
 
-/// Lab 08's functions, handed to the renderer at run time.
-struct DeferredLabCode {
-    std::function<float(const PointLight&, float)> lightReach;
-    std::function<RenderState()> lightVolumeState;
-    std::function<TileLightLists(const std::vector<LightSphere>&, const glm::mat4&, float, const TileGrid&,
-                                 const std::vector<DepthRange>&)>
-        buildTileLightLists;
-
-    /// The three as the calling program links them. Inline, so that only a
-    /// program that calls it (lab 08's, lab 09's) needs lab 08's code.
-    static DeferredLabCode fromLab08() {
-        return {&stoa::lightReach, &stoa::lightVolumeState, &stoa::buildTileLightLists};
-    }
-};
-
 /// The light besides the point lights: ambient and one directional light.
 struct SceneLighting {
     glm::vec3 ambient{0.06f, 0.07f, 0.1f};
@@ -133,7 +118,7 @@ struct DeferredStats {
 class DeferredRenderer {
 public:
     /// Needs a current context.
-    DeferredRenderer(const DeferredPrograms& programs, DeferredLabCode code);
+    explicit DeferredRenderer(const DeferredPrograms& programs);
     ~DeferredRenderer();
 
     /// The whole frame at `size` pixels into the framebuffer bound when called.
@@ -170,7 +155,6 @@ private:
     void present(GLuint target, const DeferredSettings& settings);
 
     DeferredPrograms m_programs;
-    DeferredLabCode m_code;
     GBuffer m_gBuffer;
     Framebuffer m_lightBuffer;       // RGBA16F and its own depth-stencil, a copy of the G-buffer's
     FrameUniforms m_frame;

@@ -2,8 +2,9 @@
 // Lab 08's functions for deferred shading (docs/labs/08_deferred.md): how far
 // a point light reaches, the fixed-function state of the light-volume pass,
 // and which screen tiles each light can touch. The student defines them in
-// labs/08_deferred/; DeferredRenderer reaches them at run time through
-// DeferredLabCode, so that the labs before 08 link without them.
+// labs/08_deferred/; DeferredRenderer reaches them through the framework's
+// student-code table (StudentCode::deferred), so that the labs before 08 link
+// without them.
 //
 // Tiles count from the bottom-left corner of the picture, as gl_FragCoord
 // does: tile (0, 0) holds pixels x, y in [0, tileSize).

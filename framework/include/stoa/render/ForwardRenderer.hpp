@@ -22,7 +22,6 @@ class FrameUniforms;
 class ObjectUniforms;
 class Program;
 class Scene;
-struct LabHooks;
 
 class ForwardRenderer {
 public:
@@ -34,14 +33,15 @@ public:
     glm::vec3 clearColor{0.05f, 0.06f, 0.08f};
     /// What the pass draws with; the default: depth test (less), back faces culled.
     RenderState state;
-    /// The lab's hooks (visibility, light culling); nullptr or unset hooks: none.
-    const LabHooks* hooks = nullptr;
+    /// Skip the items that the student's visibility test (StudentCode::culling.isVisible)
+    /// rejects; it must then be handed over. Off: every item is drawn.
+    bool cull = false;
 
     /// Renders into the framebuffer that is bound, over a viewport of `size`
     /// pixels. The GL objects (the uniform buffer) are made at the first call.
     void render(const Scene& scene, const Camera& camera, const Program& program, glm::ivec2 size) const;
 
-    /// How many items the last render() drew, and how many the visibility hook dropped.
+    /// How many items the last render() drew, and how many culling dropped.
     std::size_t drawnCount() const { return m_drawn; }
     std::size_t culledCount() const { return m_culled; }
 

@@ -2,7 +2,7 @@
 // The parts of shadow mapping that lab 05 defines (labs/05_shadows/light_space.cpp,
 // shadow_pass.cpp and, for cascaded shadow maps, cascades.cpp);
 // docs/labs/05_shadows.md derives them.
-// Conventions as in Transforms.hpp: right-handed world, column vectors, OpenGL
+// Conventions as in lab 01's matrices (labs/01_transforms/student/lab01.hpp): right-handed world, column vectors, OpenGL
 // clip space ([-1, 1]^3 after the divide by w).
 
 #include <glm/mat4x4.hpp>

@@ -6,11 +6,11 @@
 // shaders/shadows/cascaded.frag. Lab 05's app and
 // tests/benchmarks/shadow_benchmark.cpp both draw through it.
 //
-// The functions it calls that are the student's (ShadowMapping.hpp) reach it
-// at run time, as ShadowLabCode, from the program that links them: this file
-// names none of them, so the labs before lab 05 link without them.
+// The functions it calls that are the student's reach it through the
+// framework's student-code table (StudentCode::shadows), which the program
+// fills at start-up:
 //
-//   ShadowRenderer renderer(depth, shadowed, mapView, ShadowLabCode::fromLab05());   // in lab 05's program
+//   ShadowRenderer renderer(depth, shadowed, mapView);
 
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/render/ForwardRenderer.hpp>
@@ -22,7 +22,6 @@
 #include <glm/vec3.hpp>
 
 #include <array>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -72,30 +71,13 @@ struct ShadowSettings {
     CascadeSettings cascades;
 };
 
-/// Lab 05's functions (ShadowMapping.hpp), handed to the renderer at run time.
-struct ShadowLabCode {
-    std::function<void(const Scene&, const Framebuffer&, const Program&, const glm::mat4&)> renderShadowPass;
-    std::function<std::vector<float>(float, float, int, float)> cascadeSplits;
-    std::function<std::array<glm::vec3, 8>(const glm::mat4&, float, float, float, float)> frustumSliceCorners;
-    std::function<glm::mat4(const glm::vec3&, const std::array<glm::vec3, 8>&, int, const glm::vec3&,
-                            const glm::vec3&)>
-        cascadeLightMatrix;
-
-    /// The four as the calling program links them. Inline, so that only a
-    /// program that calls it (lab 05's) needs lab 05's code.
-    static ShadowLabCode fromLab05() {
-        return {&stoa::renderShadowPass, &stoa::cascadeSplits, &stoa::frustumSliceCorners,
-                &stoa::cascadeLightMatrix};
-    }
-};
-
 class ShadowRenderer {
 public:
     /// The three programs: shadows/depth.*, shadows/shadowed.*, shadows/depth_view.*.
-    /// They must outlive the renderer. `code`: lab 05's functions (the
-    /// cascade ones may be unset while no case asks for cascades). Needs a current context.
-    ShadowRenderer(const Program& depthProgram, const Program& shadowedProgram, const Program& mapViewProgram,
-                   ShadowLabCode code);
+    /// They must outlive the renderer. The passes call the student's functions
+    /// (StudentCode::shadows; the cascade ones only when a case asks for
+    /// cascades). Needs a current context.
+    ShadowRenderer(const Program& depthProgram, const Program& shadowedProgram, const Program& mapViewProgram);
 
     /// Both passes (the first only when settings.enabled), into the framebuffer
     /// that is bound when called, over a viewport of `size` pixels.
@@ -129,7 +111,6 @@ private:
     static void afterStudentPass(GLuint target);
     void drawMapView(const Framebuffer& map, const ShadowLight& light, const glm::ivec4& rectangle);
 
-    ShadowLabCode m_code;
     const Program& m_depthProgram;
     const Program& m_shadowedProgram;
     const Program& m_mapViewProgram;
