@@ -6,7 +6,7 @@
 #include "catch.hpp"
 
 #include <stoa/app/HeadlessContext.hpp>
-#include <stoa/camera/OrbitCamera.hpp>
+#include <stoa/camera/Camera.hpp>
 #include <stoa/core/Paths.hpp>
 #include <stoa/geometry/Shapes.hpp>
 #include <stoa/gl/Framebuffer.hpp>
@@ -33,6 +33,15 @@ namespace {
 bool near(const glm::vec3& a, const glm::vec3& b, float margin = 1e-4f) {
     return glm::all(glm::lessThanEqual(glm::abs(a - b), glm::vec3(margin)));
 }
+
+// A camera at (0, 0, 6) looking at the origin, as an orbit camera at distance 6
+// with yaw and pitch 0 would be: it needs none of lab 01's camera functions.
+class FixedCamera final : public Camera {
+public:
+    glm::vec3 eyePosition() const override { return {0.0f, 0.0f, 6.0f}; }
+    glm::vec3 lookTarget() const override { return glm::vec3(0.0f); }
+    void mouseDragged(const InputState&, glm::vec2) override {}
+};
 
 glm::vec3 originOf(const Object& object) { return glm::vec3(object.modelMatrix()[3]); }
 
@@ -160,7 +169,7 @@ TEST_CASE("A framework renderer culls with the student's visibility test when as
     left.position = {-1.0f, 0.0f, 0.0f};
     auto& right = scene.add(std::make_unique<MeshObject>(mesh, green));
     right.position = {1.0f, 0.0f, 0.0f};
-    const OrbitCamera camera({0.0f, 0.0f, 0.0f}, 6.0f, 0.0f, 0.0f);
+    const FixedCamera camera;
     Framebuffer target(64, 32);
     ForwardRenderer renderer;
     renderer.clearColor = glm::vec3(0.0f);
@@ -208,7 +217,7 @@ TEST_CASE("InstancedMesh: per-instance transforms and colours in one draw", "[sc
                                                {paths::shadersDir()});
     Scene lights;
     lights.ambient = glm::vec3(1.0f);
-    const OrbitCamera camera({0.0f, 0.0f, 0.0f}, 6.0f, 0.0f, 0.0f);
+    const FixedCamera camera;
     FrameUniforms frame;
     frame.update(camera, 2.0f, lights);
     frame.bind();
