@@ -4,8 +4,8 @@
 
 #include "checks.hpp"
 
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/ForwardRenderer.hpp>

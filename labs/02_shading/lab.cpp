@@ -9,8 +9,8 @@
 //   attenuation = kc kl kq               for the point lights
 //   shininess_scale = s                  multiplies every material's exponent
 
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/ForwardRenderer.hpp>

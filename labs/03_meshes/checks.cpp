@@ -3,7 +3,7 @@
 // pictures would not show one bad normal among thousands.
 
 #include "checks.hpp"
-#include "normals.hpp"
+#include "lab03.hpp"
 
 #include <glm/glm.hpp>
 

@@ -16,14 +16,14 @@
 // Keys in the window: f switches between facet and smooth normals.
 
 #include "checks.hpp"
-#include "normals.hpp"
+#include "lab03.hpp"
 
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/core/Paths.hpp>
 #include <stoa/geometry/ObjLoader.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/ForwardRenderer.hpp>

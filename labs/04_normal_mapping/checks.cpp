@@ -2,6 +2,7 @@
 // on height maps of their own and test a property the docs state, not values.
 
 #include "checks.hpp"
+#include "lab04.hpp"
 
 #include <stoa/image/HeightMap.hpp>
 #include <stoa/image/Image.hpp>

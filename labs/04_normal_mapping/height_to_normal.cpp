@@ -3,6 +3,8 @@
 // The height map is a 1-channel Image, row 0 at the top; the result is an RGB
 // Image of the same size that the fragment shader samples as a normal map.
 
+#include "lab04.hpp"
+
 #include <stoa/core/Assert.hpp>
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/image/HeightMap.hpp>

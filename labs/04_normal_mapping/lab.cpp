@@ -15,8 +15,8 @@
 //   normal_mapping = on | off            off: light with the mesh's own normals
 
 #include "checks.hpp"
+#include "lab04.hpp"
 
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/core/Paths.hpp>
 #include <stoa/geometry/Mesh.hpp>
@@ -26,6 +26,7 @@
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/Texture2D.hpp>
 #include <stoa/image/HeightMap.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/ForwardRenderer.hpp>

@@ -5,6 +5,8 @@
 // which v grows (the bitangent B), z along the surface normal N. The vertex
 // shader needs T and the sign of B for every vertex; this file computes them.
 
+#include "lab04.hpp"
+
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/geometry/Mesh.hpp>
 

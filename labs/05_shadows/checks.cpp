@@ -8,7 +8,7 @@
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
-#include <stoa/render/ShadowMapping.hpp>
+#include "lab05.hpp"
 #include <stoa/scene/MeshObject.hpp>
 #include <stoa/scene/Scene.hpp>
 

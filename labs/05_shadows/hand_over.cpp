@@ -3,7 +3,7 @@
 // lab 05's code calls this at start-up.
 
 #include <stoa/core/StudentCode.hpp>
-#include <stoa/render/ShadowMapping.hpp>
+#include "lab05.hpp"
 
 namespace lab05 {
 

@@ -35,13 +35,13 @@
 
 #include "checks.hpp"
 
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/geometry/ObjLoader.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
-#include <stoa/render/ShadowMapping.hpp>
+#include "lab05.hpp"
 #include <stoa/render/ShadowRenderer.hpp>
 #include <stoa/scene/AcropolisScene.hpp>
 #include <stoa/scene/MeshObject.hpp>

@@ -5,7 +5,7 @@
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/RenderPass.hpp>
-#include <stoa/render/ShadowMapping.hpp>
+#include "lab05.hpp"
 #include <stoa/scene/Scene.hpp>
 
 namespace stoa {

@@ -2,7 +2,7 @@
 // as a renderer asks for them (CourseRenderer, ForwardRenderer::cull): the
 // program of every lab that links lab 06's code calls this at start-up.
 
-#include "culling.hpp"
+#include "lab06.hpp"
 
 #include <stoa/camera/Camera.hpp>
 #include <stoa/core/StudentCode.hpp>

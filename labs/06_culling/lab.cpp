@@ -1,6 +1,6 @@
 // Lab 06 app: a field of some four hundred columns and statues around the
 // temple, 200 m across, under a sky. Every frame it asks the student's code
-// (culling.hpp) which objects the camera can see (bounds.cpp, frustum.cpp),
+// (student/lab06.hpp) which objects the camera can see (bounds.cpp, frustum.cpp),
 // which level of detail each needs (level_of_detail.cpp), and draws the sky
 // with the student's skybox.glsl. The levels themselves are the framework's
 // (stoa/geometry/LevelOfDetail.hpp: meshoptimizer's simplifier).
@@ -21,9 +21,8 @@
 //   sky = on | off                    the skybox (default on)
 //   overview = x y z  tx ty tz        the overview's eye and target (default 0 250 110  0 0 5)
 
-#include "culling.hpp"
+#include "lab06.hpp"
 
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/core/Paths.hpp>
 #include <stoa/geometry/DebugLines.hpp>
@@ -36,13 +35,14 @@
 #include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/TextureCache.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/DebugLineRenderer.hpp>
 #include <stoa/render/FrameUniforms.hpp>
-#include <stoa/render/ObjectUniforms.hpp>
 #include <stoa/scene/AcropolisScene.hpp>
 #include <stoa/scene/DrawList.hpp>
+#include <stoa/scene/ObjectUniforms.hpp>
 #include <stoa/scene/Scene.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>

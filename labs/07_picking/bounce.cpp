@@ -1,9 +1,9 @@
 // Lab 07, part 4: a ball that bounces off the Acropolis, and its sparks.
 // Read docs/labs/07_picking.md, "A bouncing ball", first. The app calls
 // advanceSimulation() every frame with the frame's duration; the rest is called
-// from there (bounce.hpp says in which order).
+// from there (lab07.hpp says in which order).
 
-#include "bounce.hpp"
+#include "lab07.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
 
@@ -64,7 +64,7 @@ void stepParticles(std::vector<Particle>& particles, float seconds, const Bounce
 void advanceSimulation(Simulation& simulation, const Bvh& bvh, float frameSeconds) {
     // TODO(lab07): add the frame's time to the accumulator; while it holds a
     // whole step: stepBall(); for a contact faster than settings.sparkSpeed,
-    // spawnSparks() (bounce.hpp) with simulation.random and count it in
+    // spawnSparks() (lab07.hpp) with simulation.random and count it in
     // simulation.contacts; stepParticles(); take the step off the accumulator and
     // add it to simulation.time (docs: "A fixed time step").
     (void)simulation;

@@ -27,29 +27,28 @@
 //                                     (default 16.667: 60 frames a second)
 // In the window, `b` throws the ball from the eye along the view.
 
-#include "bounce.hpp"
-#include "picking.hpp"
+#include "lab07.hpp"
 
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/NotImplemented.hpp>
-#include <stoa/gl/Framebuffer.hpp>
 #include <stoa/geometry/Shapes.hpp>
 #include <stoa/gl/Buffer.hpp>
+#include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/Texture2D.hpp>
-#include <stoa/gl/VertexArray.hpp>
 #include <stoa/gl/TextureCache.hpp>
+#include <stoa/gl/VertexArray.hpp>
 #include <stoa/image/Image.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/FrameUniforms.hpp>
-#include <stoa/render/ObjectUniforms.hpp>
 #include <stoa/render/TextureOverlay.hpp>
 #include <stoa/scene/AcropolisScene.hpp>
 #include <stoa/scene/DrawList.hpp>
+#include <stoa/scene/ObjectUniforms.hpp>
 #include <stoa/scene/Scene.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>

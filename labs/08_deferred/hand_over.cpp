@@ -2,6 +2,8 @@
 // for DeferredRenderer: the program of every lab that links lab 08's code
 // calls this at start-up.
 
+#include "lab08.hpp"
+
 #include <stoa/core/StudentCode.hpp>
 #include <stoa/gl/RenderState.hpp>
 #include <stoa/render/DeferredShading.hpp>

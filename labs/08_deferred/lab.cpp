@@ -22,8 +22,8 @@
 //   heat_scale = n                the count the heat maps show as white, 1..1024 (default 64)
 // In the window: r switches renderer, v the view, p stops and starts the lights.
 
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/DeferredRenderer.hpp>

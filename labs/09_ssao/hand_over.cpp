@@ -2,6 +2,8 @@
 // for CourseRenderer's occlusion: the program of every lab that links lab 09's
 // code calls this at start-up.
 
+#include "lab09.hpp"
+
 #include <stoa/core/StudentCode.hpp>
 #include <stoa/render/AmbientOcclusion.hpp>
 

@@ -18,10 +18,12 @@
 //   lights = n          wandering lights of lab 08, 0..1024 (default 0)
 // In the window: v switches the view, o the occlusion on and off, k the kernel size.
 
-#include <stoa/camera/CameraRig.hpp>
+#include "lab09.hpp"
+
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/Texture2D.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/AmbientOcclusion.hpp>

@@ -1,7 +1,9 @@
 // Lab 10, part 1: how an agent decides. Read docs/labs/10_crowds.md, "Finite
 // state machines" and "Subsumption", first. The simulation calls one of the two
 // for every agent at every step, with its senses of that step
-// (stoa/crowd/CrowdLab.hpp declares both and says what they return).
+// (lab10.hpp declares both and says what they return).
+
+#include "lab10.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/crowd/CrowdLab.hpp>

@@ -2,6 +2,7 @@
 // blendMd2Frames() on data of their own and test a property the docs state.
 
 #include "checks.hpp"
+#include "lab10.hpp"
 
 #include <stoa/crowd/CrowdLab.hpp>
 

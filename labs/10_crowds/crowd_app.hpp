@@ -24,8 +24,8 @@
 // speed, t shows the trails, v switches the view, a click on an agent selects it.
 
 #include "checks.hpp"
+#include "lab10.hpp"
 
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/InputError.hpp>
 #include <stoa/core/Paths.hpp>
 #include <stoa/core/StudentCode.hpp>
@@ -38,6 +38,7 @@
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/Texture2D.hpp>
 #include <stoa/image/Image.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/Lab.hpp>
 #include <stoa/render/CrowdRenderer.hpp>

@@ -4,6 +4,8 @@
 // [footprintMin, footprintMax] (x, z); texel (col, row) is stored at
 // [row * width + col], and row 0 lies along z = footprintMin.y.
 
+#include "lab10.hpp"
+
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/crowd/CrowdLab.hpp>
 

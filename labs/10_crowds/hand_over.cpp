@@ -2,6 +2,8 @@
 // for CrowdSimulation and CrowdRenderer: the program of every lab that links
 // lab 10's code calls this at start-up.
 
+#include "lab10.hpp"
+
 #include <stoa/core/StudentCode.hpp>
 #include <stoa/crowd/CrowdLab.hpp>
 

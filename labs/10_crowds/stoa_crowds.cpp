@@ -13,8 +13,8 @@
 
 #include "crowd_app.hpp"
 
-#include <stoa/crowd/GroundMapMaker.hpp>
 #include <stoa/lab/LabApp.hpp>
+#include <stoa/scene/GroundMapMaker.hpp>
 
 #include <cstdio>
 #include <cstdlib>

@@ -4,7 +4,7 @@
 
 #include "checks.hpp"
 
-#include "editor.hpp"
+#include "lab11.hpp"
 
 #include <string>
 #include <vector>

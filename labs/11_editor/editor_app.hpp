@@ -24,13 +24,14 @@
 // selection along it, u undoes, r redoes, m gives the selection the next
 // material, x deletes it, v switches the view.
 
+#include "lab01.hpp"
+#include "lab04.hpp"
+#include "lab11.hpp"
 #include "checks.hpp"
-#include "editor.hpp"
 #include "editor_pipeline.hpp"
 
 #include <stoa/audio/SoundClip.hpp>
 #include <stoa/audio/SoundDevice.hpp>
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/InputError.hpp>
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/core/Paths.hpp>
@@ -47,17 +48,17 @@
 #include <stoa/gl/Texture2D.hpp>
 #include <stoa/image/HeightMap.hpp>
 #include <stoa/image/Image.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/Lab.hpp>
-#include "lab01.hpp"
 #include <stoa/render/AmbientOcclusion.hpp>
 #include <stoa/render/AmbientOcclusionPass.hpp>
 #include <stoa/render/DebugLineRenderer.hpp>
 #include <stoa/render/DeferredRenderer.hpp>
 #include <stoa/render/FrameUniforms.hpp>
-#include <stoa/render/ObjectUniforms.hpp>
 #include <stoa/render/TextureOverlay.hpp>
 #include <stoa/scene/DrawList.hpp>
+#include <stoa/scene/ObjectUniforms.hpp>
 #include <stoa/scene/Scene.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>

@@ -8,8 +8,10 @@
 // renderer panel's "deferred" is on, and the showcase (docs/showcase.md) is
 // drawn by it.
 
-#include "../06_culling/culling.hpp"
-#include "../07_picking/bounce.hpp"
+#include "lab01.hpp"
+#include "lab05.hpp"
+#include "lab06.hpp"
+#include "lab07.hpp"
 
 #include <stoa/camera/Camera.hpp>
 #include <stoa/core/HashRandom.hpp>
@@ -30,10 +32,8 @@
 #include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/VertexArray.hpp>
-#include "lab01.hpp"
 #include <stoa/render/AmbientOcclusion.hpp>
 #include <stoa/render/CourseRenderer.hpp>
-#include <stoa/render/ShadowMapping.hpp>
 #include <stoa/scene/WanderingLights.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>

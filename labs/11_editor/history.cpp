@@ -1,7 +1,7 @@
 // Lab 11, part 3: undo and redo. Read docs/labs/11_editor.md, "Undo and redo
 // as commands", first.
 
-#include "editor.hpp"
+#include "lab11.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
 

@@ -1,7 +1,7 @@
 // Lab 11, part 4: which assets to reload. Read docs/labs/11_editor.md,
 // "Hot reload", first.
 
-#include "editor.hpp"
+#include "lab11.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
 

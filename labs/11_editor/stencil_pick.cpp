@@ -1,7 +1,7 @@
 // Lab 11, part 1: picking through the stencil buffer. Read docs/labs/11_editor.md,
 // "Picking with the stencil buffer", first.
 
-#include "editor.hpp"
+#include "lab11.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
 

@@ -1,10 +1,10 @@
 // Lab 03: facet and smooth vertex normals. Read docs/labs/03_meshes.md first.
-// The declarations, with what each function must return, are in normals.hpp
+// The declarations, with what each function must return, are in lab03.hpp
 // (next to this file), which this file and the app include. Use glm::cross, glm::dot,
 // glm::normalize, glm::length and std::acos; stoa::computeSmoothNormals is the
 // area-weighted version you are not to call.
 
-#include "normals.hpp"
+#include "lab03.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/geometry/Mesh.hpp>

@@ -7,7 +7,7 @@
 #include "lab01.hpp"
 
 #include <stoa/core/Assert.hpp>
-#include <stoa/render/ShadowMapping.hpp>
+#include "lab05.hpp"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>

@@ -4,7 +4,7 @@
 // uses the mesh, every frame: the culling tests and the level of detail use
 // only this sphere (and the framework's world box).
 
-#include "culling.hpp"
+#include "lab06.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
 

@@ -4,7 +4,7 @@
 // projection * view, then sphereInFrustum() for every object, and
 // boxInFrustum() for those whose sphere passed.
 
-#include "culling.hpp"
+#include "lab06.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
 

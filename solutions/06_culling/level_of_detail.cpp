@@ -3,7 +3,7 @@
 // mesh's levels with meshoptimizer (stoa/geometry/LevelOfDetail.hpp); you decide
 // which one to draw, or none.
 
-#include "culling.hpp"
+#include "lab06.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
 

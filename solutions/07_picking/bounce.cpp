@@ -1,9 +1,9 @@
 // Lab 07, part 4: a ball that bounces off the Acropolis, and its sparks.
 // Read docs/labs/07_picking.md, "A bouncing ball", first. The app calls
 // advanceSimulation() every frame with the frame's duration; the rest is called
-// from there (bounce.hpp says in which order).
+// from there (lab07.hpp says in which order).
 
-#include "bounce.hpp"
+#include "lab07.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
 

@@ -3,7 +3,7 @@
 // Read docs/labs/07_picking.md, "The BVH", "Where to split" and "Nearest hit"
 // first. The app builds the tree once, then asks intersectBvh() for every ray.
 
-#include "picking.hpp"
+#include "lab07.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
 

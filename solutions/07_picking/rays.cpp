@@ -3,7 +3,7 @@
 // "Ray and triangle" first. The app casts one ray per pixel of the ray-cast
 // cases, and one through the clicked pixel when you pick.
 
-#include "picking.hpp"
+#include "lab07.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
 

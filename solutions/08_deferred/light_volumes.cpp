@@ -4,6 +4,8 @@
 // fragment of that sphere lights the G-buffer pixel under it
 // (shaders/deferred/light_volume.frag).
 
+#include "lab08.hpp"
+
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/gl/RenderState.hpp>
 #include <stoa/render/DeferredShading.hpp>

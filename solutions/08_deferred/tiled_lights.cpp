@@ -4,6 +4,8 @@
 // to one full-screen pass (shaders/deferred/tiled.frag), where each pixel
 // loops over its own tile's lights only.
 
+#include "lab08.hpp"
+
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/render/DeferredShading.hpp>
 

@@ -3,6 +3,8 @@
 // uploads them once per case: the kernel as a uniform array (uKernel), the
 // noise as a 4 x 4 texture that repeats over the picture (uNoise).
 
+#include "lab09.hpp"
+
 #include <stoa/core/NotImplemented.hpp>
 #include <stoa/render/AmbientOcclusion.hpp>
 

@@ -2,6 +2,8 @@
 // state machines" and "Subsumption", first. The simulation calls one of the two
 // for every agent at every step, with its senses of that step.
 
+#include "lab10.hpp"
+
 #include <stoa/crowd/CrowdLab.hpp>
 
 namespace stoa {

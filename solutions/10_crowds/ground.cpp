@@ -3,6 +3,8 @@
 // the footprint whose corner nearest footprintMin is
 // footprintMin + (col, row) * cellSize; row 0 lies at z = footprintMin.y.
 
+#include "lab10.hpp"
+
 #include <stoa/crowd/CrowdLab.hpp>
 
 #include <glm/common.hpp>

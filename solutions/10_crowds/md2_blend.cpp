@@ -1,6 +1,8 @@
 // Lab 10, part 3: animating MD2 characters between their key frames. Read
 // docs/labs/10_crowds.md, "Key-frame animation", first.
 
+#include "lab10.hpp"
+
 #include <stoa/crowd/CrowdLab.hpp>
 
 #include <glm/geometric.hpp>

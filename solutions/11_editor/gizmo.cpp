@@ -1,7 +1,7 @@
 // Lab 11, part 2: dragging along a gizmo's axis. Read docs/labs/11_editor.md,
 // "Dragging along an axis", first.
 
-#include "editor.hpp"
+#include "lab11.hpp"
 
 #include <glm/geometric.hpp>
 

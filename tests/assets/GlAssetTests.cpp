@@ -1,7 +1,7 @@
 // The cache with OpenGL assets on the headless context: files rewritten on
 // disk while the "program" runs, and what the next frame draws.
 
-#include "../gl/GlTestSupport.hpp"
+#include "GlTestSupport.hpp"
 #include "TempFolder.hpp"
 
 #include <stoa/app/HeadlessContext.hpp>

@@ -19,7 +19,7 @@
 
 #include "BenchmarkTiming.hpp"
 
-#include "../../labs/07_picking/picking.hpp"
+#include "lab07.hpp"
 
 #include <Geometry.hpp>
 

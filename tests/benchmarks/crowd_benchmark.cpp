@@ -27,6 +27,7 @@
 // $STOA_HEADLESS picks the backend, $LP_NUM_THREADS llvmpipe's threads.
 
 #include "BenchmarkTiming.hpp"
+#include "lab10.hpp"
 
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/core/Paths.hpp>

@@ -24,7 +24,7 @@
 
 #include "BenchmarkTiming.hpp"
 
-#include "../../labs/06_culling/culling.hpp"
+#include "lab06.hpp"
 
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/core/Paths.hpp>
@@ -39,9 +39,9 @@
 #include <stoa/image/Image.hpp>
 #include <stoa/image/ImageCompare.hpp>
 #include <stoa/render/FrameUniforms.hpp>
-#include <stoa/render/ObjectUniforms.hpp>
 #include <stoa/scene/AcropolisScene.hpp>
 #include <stoa/scene/DrawList.hpp>
+#include <stoa/scene/ObjectUniforms.hpp>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_inverse.hpp>

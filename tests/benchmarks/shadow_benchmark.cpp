@@ -21,7 +21,7 @@
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Program.hpp>
-#include <stoa/render/ShadowMapping.hpp>
+#include "lab05.hpp"
 #include <stoa/render/ShadowRenderer.hpp>
 #include <stoa/scene/AcropolisScene.hpp>
 

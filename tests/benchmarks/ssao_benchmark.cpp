@@ -23,6 +23,7 @@
 // $STOA_HEADLESS picks the backend, $LP_NUM_THREADS llvmpipe's threads.
 
 #include "BenchmarkTiming.hpp"
+#include "lab09.hpp"
 
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/camera/OrbitCamera.hpp>

@@ -4,8 +4,8 @@
 // tests/e2e/window_events.sh drives it under Xvfb with xdotool. It is a Lab
 // like any other, run by runLab(), so what it prints is what a lab receives.
 
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/gl/RenderPass.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 #include <stoa/lab/LabApp.hpp>
 

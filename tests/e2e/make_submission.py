@@ -12,8 +12,8 @@ GLSL that returns STOA_NOT_IMPLEMENTED, either marked TODO(labNN)) is replaced
 by the body of the function of the same name in the solution's twin, and what
 the solution adds around its functions (#includes, helpers, constants) is added
 where the solution has it. The grading tests grade what this makes, so a stub
-that includes a header from its lab folder (03_meshes/normals.cpp includes
-normals.hpp) is graded as a student's would be.
+that includes its lab's header (03_meshes/normals.cpp includes lab03.hpp) is
+graded as a student's would be.
 
 It never writes a stub silently: a stubbed function without a twin in the
 solution, a student file without one, or a stub left in the result is an error

@@ -3,7 +3,7 @@
 // edit replaces the program; saving writes the text through a temporary file.
 // Every shader lives in a TempFolder, never in shaders/.
 
-#include "../gl/GlTestSupport.hpp"
+#include "GlTestSupport.hpp"
 #include "TempFolder.hpp"
 
 #include <stoa/app/HeadlessContext.hpp>

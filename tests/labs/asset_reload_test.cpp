@@ -5,9 +5,9 @@
 
 #include "catch.hpp"
 #include "TempFolder.hpp"
-#include "../assets/NoteAsset.hpp"
+#include "NoteAsset.hpp"
 
-#include "../../labs/11_editor/editor.hpp"
+#include "lab11.hpp"
 
 using namespace stoa;
 using stoa::test::Note;

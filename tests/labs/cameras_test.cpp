@@ -3,8 +3,8 @@
 #include "catch.hpp"
 
 #include <stoa/app/FixedStepClock.hpp>
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/InputError.hpp>
+#include <stoa/lab/CameraRig.hpp>
 
 #include <glm/glm.hpp>
 

@@ -18,9 +18,7 @@
 // Each test makes its own headless context.
 
 #include "catch.hpp"
-#include "../gl/GlTestSupport.hpp"
-
-#include "../../labs/11_editor/editor_pipeline.hpp"
+#include "GlTestSupport.hpp"
 
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/camera/OrbitCamera.hpp>

@@ -1,4 +1,4 @@
-// Lab 10's six functions (stoa/crowd/CrowdLab.hpp) against independent
+// Lab 10's six functions (labs/10_crowds/student/lab10.hpp) against independent
 // references written here, in double where there is arithmetic:
 //   - stepStateMachine and arbitrateLayers, asked through a fake CrowdSenses
 //     that answers every condition from a table (keyed by the condition's
@@ -45,10 +45,11 @@
 #include "catch.hpp"
 #include "TempFolder.hpp"
 #include "TestRandom.hpp"
+#include "lab10.hpp"
 
 #include <stoa/core/Paths.hpp>
 #include <stoa/crowd/CrowdLab.hpp>
-#include <stoa/crowd/GroundMapMaker.hpp>
+#include <stoa/scene/GroundMapMaker.hpp>
 
 #include <glm/glm.hpp>
 

@@ -16,7 +16,7 @@
 #include "catch.hpp"
 #include "TestRandom.hpp"
 
-#include "../../labs/06_culling/culling.hpp"
+#include "lab06.hpp"
 
 #include <stoa/geometry/Bounds.hpp>
 #include <stoa/geometry/Mesh.hpp>

@@ -26,6 +26,7 @@
 
 #include "catch.hpp"
 #include "TestRandom.hpp"
+#include "lab08.hpp"
 
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/RenderState.hpp>

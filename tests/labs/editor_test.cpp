@@ -1,4 +1,4 @@
-// Lab 11's editor core (labs/11_editor/editor.hpp) against independent
+// Lab 11's editor core (labs/11_editor/student/lab11.hpp) against independent
 // references written here, in double where there is arithmetic:
 //   - objectAtPixel on small read-backs made by hand: the window's y flipped
 //     (the read-back's first row is the bottom one), background 0 gives -1 and
@@ -44,7 +44,7 @@
 #include "catch.hpp"
 #include "TestRandom.hpp"
 
-#include "../../labs/11_editor/editor.hpp"
+#include "lab11.hpp"
 
 #include <glm/glm.hpp>
 

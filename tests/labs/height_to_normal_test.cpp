@@ -2,6 +2,7 @@
 // ramps along x and along the rows, a ridge across the wrapped border.
 
 #include "catch.hpp"
+#include "lab04.hpp"
 
 #include <stoa/image/HeightMap.hpp>
 #include <stoa/image/Image.hpp>

@@ -6,7 +6,7 @@
 
 #include "catch.hpp"
 
-#include "../../labs/03_meshes/normals.hpp"
+#include "lab03.hpp"
 
 #include <glm/glm.hpp>
 

@@ -18,7 +18,7 @@
 #include "catch.hpp"
 #include "TestRandom.hpp"
 
-#include "../../labs/07_picking/picking.hpp"
+#include "lab07.hpp"
 
 #include <stoa/geometry/Bounds.hpp>
 #include <stoa/geometry/Mesh.hpp>

@@ -15,7 +15,7 @@
 #include <stoa/gl/Texture2D.hpp>
 #include <stoa/gl/VertexArray.hpp>
 #include <stoa/image/Image.hpp>
-#include <stoa/render/ShadowMapping.hpp>
+#include "lab05.hpp"
 #include <stoa/scene/MeshObject.hpp>
 #include <stoa/scene/Scene.hpp>
 

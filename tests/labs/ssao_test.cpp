@@ -1,4 +1,4 @@
-// Lab 09's kernel and noise tile (stoa/render/AmbientOcclusion.hpp) against
+// Lab 09's kernel and noise tile (labs/09_ssao/student/lab09.hpp) against
 // independent references:
 //   - KernelRandom: the same numbers for the same seed, in [0, 1), a mean near
 //     1/2 and a variance near 1/12, and its first numbers pinned to values worked
@@ -16,6 +16,7 @@
 // GLSL, left to the image cases.
 
 #include "catch.hpp"
+#include "lab09.hpp"
 
 #include <stoa/render/AmbientOcclusion.hpp>
 

@@ -3,6 +3,7 @@
 // must be the in-plane direction of dPdu and the handedness the side dPdv lies on.
 
 #include "catch.hpp"
+#include "lab04.hpp"
 
 #include <stoa/geometry/Mesh.hpp>
 #include <stoa/geometry/Shapes.hpp>

@@ -7,7 +7,7 @@
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/Texture2D.hpp>
 #include <stoa/render/DeferredRenderer.hpp>
-#include <stoa/render/ObjectUniforms.hpp>
+#include <stoa/scene/ObjectUniforms.hpp>
 #include <stoa/scene/Scene.hpp>
 
 #include <glm/glm.hpp>

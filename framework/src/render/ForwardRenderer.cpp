@@ -6,7 +6,7 @@
 #include <stoa/gl/RenderPass.hpp>
 #include <stoa/render/ForwardRenderer.hpp>
 #include <stoa/render/FrameUniforms.hpp>
-#include <stoa/render/ObjectUniforms.hpp>
+#include <stoa/scene/ObjectUniforms.hpp>
 #include <stoa/scene/Scene.hpp>
 
 #include <algorithm>

@@ -4,7 +4,6 @@
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/StateCache.hpp>
-#include <stoa/render/ShadowMapping.hpp>
 #include <stoa/render/ShadowRenderer.hpp>
 #include <stoa/scene/Scene.hpp>
 

@@ -3,8 +3,8 @@
 #include <stoa/core/StudentCode.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
-#include <stoa/render/ObjectUniforms.hpp>
 #include <stoa/scene/Object.hpp>
+#include <stoa/scene/ObjectUniforms.hpp>
 
 #include <glm/glm.hpp>
 

@@ -11,8 +11,8 @@
 //   glm::mat4 view = studentCode().transforms.lookAtMatrix(eye, target, up);
 //
 // The functions themselves are declared, with what each must do, in the
-// header of the lab that writes them (lab 01: labs/01_transforms/student/lab01.hpp)
-// or in the framework header beside the types they use (ShadowMapping.hpp, ...).
+// header of the lab that writes them, in the lab's student/ folder
+// (labs/01_transforms/student/lab01.hpp for lab 01).
 
 #include <stoa/core/StudentFunction.hpp>
 

@@ -13,7 +13,7 @@
 //
 // Seen from above with +x to the right, +z runs down the image: row 0 is the
 // edge at footprintMin.y. The student's look-ups are walkableAt() and
-// heightAt() (CrowdLab.hpp).
+// heightAt() (lab 10's).
 
 #include <stoa/crowd/CrowdWorld.hpp>
 #include <stoa/geometry/Mesh.hpp>

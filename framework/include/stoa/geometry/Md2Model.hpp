@@ -3,7 +3,7 @@
 // frame holds every vertex, compressed to three bytes plus an index into a
 // fixed table of 162 normals), texture coordinates in skin pixels and named
 // animations spelt by the frames' names ("run1", "run2", ... make "run").
-// No OpenGL here; lab 10 blends two frames (CrowdLab.hpp).
+// No OpenGL here; lab 10 blends two frames (StudentCode::crowds).
 //
 //   Md2Model robot = loadMd2(assetsDir() / "crowds/explorer.md2");
 //   const Md2Animation* run = robot.findAnimation("run");

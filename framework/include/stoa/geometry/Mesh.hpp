@@ -58,13 +58,4 @@ public:
 /// triangle still gets its true normal.
 void computeSmoothNormals(Mesh& mesh);
 
-/// Lab 04 (labs/04_normal_mapping/tangents.cpp; docs/labs/04_normal_mapping.md):
-/// fills every vertex's `tangent` from the positions and uvs of the triangles
-/// that use it. xyz: the direction in which u grows, made perpendicular to the
-/// vertex normal and unit length; w = +1 or -1, chosen so that w * cross(N, T)
-/// points the way v grows (w = -1 where the uvs are mirrored).
-/// Needs unit normals. A vertex whose triangles give no usable uv direction
-/// (all degenerate in uv) still gets a unit tangent perpendicular to its normal, w = +1.
-void computeTangents(Mesh& mesh);
-
 } // namespace stoa

@@ -53,14 +53,4 @@ struct HeightSamples {
 /// naming the file and the cause.
 HeightSamples loadHeightSamples(const std::filesystem::path& path);
 
-/// Lab 04 (labs/04_normal_mapping/height_to_normal.cpp; docs/labs/04_normal_mapping.md,
-/// "From heights to normals"): a tangent-space normal map from a 1-channel
-/// height map. Heights are h = value / 255; x runs along +u and rows run down
-/// the image, along -v. With central differences that wrap around the borders
-/// (the maps tile), the normal of texel (x, y) is
-///   n = normalize(-strength * dh/du, -strength * dh/dv, 1),
-/// packed into an RGB image of the same size as round((n * 0.5 + 0.5) * 255).
-/// `strength` (> 0) is how many texel widths tall a height of 1 stands.
-Image normalMapFromHeight(const Image& height, float strength);
-
 } // namespace stoa

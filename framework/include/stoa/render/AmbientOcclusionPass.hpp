@@ -6,7 +6,7 @@
 // takes. Lab 09's app and tests/benchmarks/ssao_benchmark.cpp draw through it.
 //
 // The kernel and the noise come from the student's ssaoKernel() and
-// ssaoNoise() (AmbientOcclusion.hpp), handed over as data, so this file names
+// ssaoNoise() (lab 09's), handed over as data, so this file names
 // no student function.
 //
 //   AmbientOcclusionPass ao(occlusionProgram, blurProgram);           // needs a current context

@@ -1,10 +1,10 @@
 #pragma once
-// Lab 08's functions for deferred shading (docs/labs/08_deferred.md): how far
-// a point light reaches, the fixed-function state of the light-volume pass,
-// and which screen tiles each light can touch. The student defines them in
-// labs/08_deferred/; DeferredRenderer reaches them through the framework's
-// student-code table (StudentCode::deferred), so that the labs before 08 link
-// without them.
+// The types of lab 08's functions for deferred shading (docs/labs/08_deferred.md):
+// screen tiles, lights as spheres, depth ranges and the tiles' light lists. The
+// functions (how far a point light reaches, the light-volume pass's state, which
+// tiles each light touches) are the student's, declared in
+// labs/08_deferred/student/lab08.hpp; DeferredRenderer reaches them through the
+// framework's student-code table (StudentCode::deferred).
 //
 // Tiles count from the bottom-left corner of the picture, as gl_FragCoord
 // does: tile (0, 0) holds pixels x, y in [0, tileSize).
@@ -65,32 +65,5 @@ struct TileLightLists {
     std::vector<int> offsets;   // grid.tileCount() + 1 entries, offsets[0] = 0
     std::vector<int> lights;
 };
-
-// ---- Lab 08's student functions (labs/08_deferred/) ---------------------
-
-/// The distance d >= 0 at which the light's brightest colour channel,
-/// attenuated by 1 / (constant + linear d + quadratic d^2), has fallen to
-/// `cutoff`; 0 when it is never brighter than `cutoff`. (light_volumes.cpp)
-float lightReach(const PointLight& light, float cutoff);
-
-/// The state the light-volume pass draws each light's sphere with: which
-/// faces, which depth test, what blending, so that each lit pixel gets the
-/// light once, also when the camera is inside the sphere. (light_volumes.cpp)
-RenderState lightVolumeState();
-
-/// The tiles of `grid` that a light's sphere can cover, seen through
-/// `projection` (view -> clip, near plane at distance `near`): conservative (a
-/// tile it covers is never left out), every tile when the sphere crosses the
-/// near plane, and empty when it lies wholly nearer than the near plane (or
-/// behind the eye) or outside the picture. (tiled_lights.cpp)
-TileRange lightTileRange(const LightSphere& light, const glm::mat4& projection, float near, const TileGrid& grid);
-
-/// Every tile's list of the lights whose lightTileRange() holds it and whose
-/// sphere reaches into the tile's depth range: tileDepths[t] is tile t's
-/// (grid.index() order), and a light whose distances from -centerView.z - reach
-/// to -centerView.z + reach miss it cannot light any of the tile's pixels.
-/// (tiled_lights.cpp)
-TileLightLists buildTileLightLists(const std::vector<LightSphere>& lights, const glm::mat4& projection, float near,
-                                   const TileGrid& grid, const std::vector<DepthRange>& tileDepths);
 
 } // namespace stoa

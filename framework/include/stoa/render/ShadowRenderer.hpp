@@ -14,7 +14,6 @@
 
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/render/ForwardRenderer.hpp>
-#include <stoa/render/ShadowMapping.hpp>
 #include <stoa/render/TextureOverlay.hpp>
 
 #include <glm/mat4x4.hpp>

@@ -1,9 +1,15 @@
 #pragma once
-// The parts of shadow mapping that lab 05 defines (labs/05_shadows/light_space.cpp,
-// shadow_pass.cpp and, for cascaded shadow maps, cascades.cpp);
-// docs/labs/05_shadows.md derives them.
-// Conventions as in lab 01's matrices (labs/01_transforms/student/lab01.hpp): right-handed world, column vectors, OpenGL
-// clip space ([-1, 1]^3 after the divide by w).
+// Lab 05: everything you write (light_space.cpp, shadow_pass.cpp and, for cascaded shadow maps,
+// cascades.cpp). docs/labs/05_shadows.md derives each function. The lab's app, the tests and later
+// labs include this header; your files define what it declares.
+//
+// Conventions as in lab 01's matrices: right-handed world, column vectors, OpenGL clip space
+// ([-1, 1]^3 after the divide by w).
+//
+// The framework's ShadowRenderer calls renderShadowPass() and the cascade functions through its
+// student-code table (hand_over.cpp hands them over).
+
+#include "lab01.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>

@@ -1,5 +1,5 @@
-#include <stoa/camera/CameraRig.hpp>
 #include <stoa/core/InputError.hpp>
+#include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
 
 #include <glm/glm.hpp>

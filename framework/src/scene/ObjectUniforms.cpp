@@ -1,9 +1,9 @@
 #include <stoa/geometry/Material.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/Texture2D.hpp>
-#include <stoa/render/ObjectUniforms.hpp>
 #include <stoa/scene/DrawList.hpp>
 #include <stoa/scene/MeshObject.hpp>
+#include <stoa/scene/ObjectUniforms.hpp>
 
 namespace stoa {
 

@@ -1,4 +1,4 @@
-#include <stoa/crowd/GroundMapMaker.hpp>
+#include <stoa/scene/GroundMapMaker.hpp>
 
 #include <stoa/core/HashRandom.hpp>
 #include <stoa/geometry/Mesh.hpp>
