@@ -31,7 +31,7 @@ placeholder = re.compile(r"NN_name|NN_\w+|\bNN\b|<[^>]*>|\bCASE\b|\bMISTAKE\b|\{
 programs = set()
 for cmake in list(release.rglob("CMakeLists.txt")) + list(release.rglob("*.cmake")):
     text = cmake.read_text(encoding="utf-8", errors="replace")
-    programs.update(re.findall(r"(?:add_executable|stoa_add_test_program)\(\s*([\w-]+)", text))
+    programs.update(re.findall(r"(?:add_executable|stoa_add_test_program|stoa_add_tool)\(\s*([\w-]+)", text))
 for lab in release.glob("labs/[0-9][0-9]_*"):
     programs.add("lab" + lab.name)
 

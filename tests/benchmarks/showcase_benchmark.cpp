@@ -12,7 +12,7 @@
 
 #include "BenchmarkTiming.hpp"
 
-#include "../../labs/11_editor/editor_app.hpp"
+#include "editor_app.hpp"
 
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/core/Paths.hpp>
