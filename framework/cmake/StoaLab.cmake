@@ -59,10 +59,10 @@ set_property(GLOBAL PROPERTY STOA_MISTAKES "")
 set_property(GLOBAL PROPERTY STOA_EQUIVALENTS "")
 set_property(GLOBAL PROPERTY STOA_OUT_OF_GALLERY "")
 
-# The files of a lab's folder in labs/ that are not student files (a header such
-# as normals.hpp) are reachable from every track's student files, wherever the
-# track is: an `#include "normals.hpp"` looks first next to the including file,
-# then here. A submission's track (<build>/track) holds only its student files,
+# The files of a lab's folder in labs/ that are not student files (the lab's
+# header, student/lab03.hpp) are reachable from every track's student files,
+# wherever the track is: an `#include "lab03.hpp"` looks first next to the
+# including file, then here. A submission's track (<build>/track) holds only its student files,
 # so a header the student changed in their own tree is not used: the student
 # code compiles against the header the lab's app compiles against.
 function(_stoa_lab_folder_includes target lab)
@@ -109,7 +109,7 @@ endfunction()
 # in stoa/lab/LabBuildInfo.hpp): name, track, lab folder and the GLSL search path. The
 # search path ends with the folders in labs/ of the lab and the labs it uses, so
 # that a GLSL include of a non-student file there is found from any track, as
-# normals.hpp is for C++ (_stoa_lab_folder_includes); student files come first.
+# lab03.hpp is for C++ (_stoa_lab_folder_includes); student files come first.
 function(_stoa_lab_program lab target output_dir track_name search_path objects)
   get_property(uses GLOBAL PROPERTY STOA_LAB_${lab}_USES)
   foreach(used IN LISTS uses lab)
