@@ -84,14 +84,15 @@ if [ -d "$source/solutions" ]; then
   lines=$(mktemp)
   for solution_lab in "$source"/solutions/[0-9][0-9]_*/; do
     lab=$(basename "$solution_lab")
-    for solution in "$solution_lab"*; do
+    for solution in "$solution_lab"student/*; do
       [ -f "$solution" ] || continue
       name=$(basename "$solution")
-      student="$out/labs/$lab/$name"
-      [ -f "$student" ] || continue               # not a student file (hidden cases, notes)
-      if cmp -s "$solution" "$student"; then fail "labs/$lab/$name is identical to its solution"; fi
+      student="$out/labs/$lab/student/$name"
+      [ -f "$student" ] || fail "solutions/$lab/student/$name has no twin labs/$lab/student/$name in the release"
+      [ -f "$student" ] || continue
+      if cmp -s "$solution" "$student"; then fail "labs/$lab/student/$name is identical to its solution"; fi
       # Lines only the solution has, long enough to be telling.
-      grep -vxF -f "$source/labs/$lab/$name" "$solution" | sed 's/^[[:space:]]*//' |
+      grep -vxF -f "$source/labs/$lab/student/$name" "$solution" | sed 's/^[[:space:]]*//' |
         awk 'length($0) >= 40' >> "$lines" || true
     done
   done

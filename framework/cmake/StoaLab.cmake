@@ -1,8 +1,12 @@
 # The lab mechanism.
 #
 # A lab is a folder labs/NN_name/ with its app (lab.cpp), its cases (cases.ini)
-# and the files a student edits. solutions/NN_name/ holds the same student files,
-# filled in. A "track" says where the student files come from:
+# and, in labs/NN_name/student/, the files a student edits and the header that
+# declares them (labNN.hpp). solutions/NN_name/student/ holds the same student
+# files, filled in. Every track keeps a lab's student files at
+# <track root>/NN_name/student/, so a GLSL include names one ("05_shadows/student/
+# shadows.glsl") the same way from every track. A "track" says where the student
+# files come from:
 #   main       labs/ by default, solutions/ with -DSTOA_USE_SOLUTIONS=ON  -> build/bin/
 #   stubs      labs/, built beside a solutions build for the tests       -> build/bin/stubs/
 #   mistake    a solution with one planted mistake (solutions/NN/mistakes/*.mistake)
@@ -13,7 +17,7 @@
 #   gallery    (tests/data/out_of_gallery/NN/mistakes/*.mistake)          -> build/bin/out-of-gallery/NN_name.NAME/
 #
 #   stoa_add_lab(NAME 01_transforms
-#                STUDENT_FILES transforms.cpp camera_controls.cpp   # C++ and GLSL, twins in solutions/
+#                STUDENT_FILES transforms.cpp cameras.cpp   # in student/, C++ and GLSL; twins in solutions/
 #                APP_SOURCES lab.cpp
 #                USES ...)                                          # earlier labs whose student code it links
 #
@@ -30,6 +34,7 @@ set(STOA_LABS_DIR ${STOA_ROOT_DIR}/labs)
 set(STOA_SOLUTIONS_DIR ${STOA_ROOT_DIR}/solutions)
 # STOA_TRACK_DIR builds the main track from a student's labs/ tree instead: only
 # the student files each lab declares are copied from it (into <build>/track).
+set(STOA_STUDENT_FOLDER student)
 set(STOA_TRACK_DIR "" CACHE PATH "Build the labs from this folder (a student's labs/ tree) instead of labs/")
 if(STOA_TRACK_DIR)
   set(STOA_MAIN_TRACK_DIR ${CMAKE_BINARY_DIR}/track)
@@ -59,12 +64,12 @@ set_property(GLOBAL PROPERTY STOA_MISTAKES "")
 set_property(GLOBAL PROPERTY STOA_EQUIVALENTS "")
 set_property(GLOBAL PROPERTY STOA_OUT_OF_GALLERY "")
 
-# The files of a lab's folder in labs/ that are not student files (the lab's
-# header, student/lab03.hpp) are reachable from every track's student files,
-# wherever the track is: an `#include "lab03.hpp"` looks first next to the
-# including file, then here. A submission's track (<build>/track) holds only its student files,
-# so a header the student changed in their own tree is not used: the student
-# code compiles against the header the lab's app compiles against.
+# The lab's header (labs/NN_name/student/lab03.hpp), which is no student file,
+# is reachable from every track's student files, wherever the track is: an
+# `#include "lab03.hpp"` looks first next to the including file, then here. A
+# submission's track (<build>/track) holds only its student files, so a header
+# the student changed in their own tree is not used: the student code compiles
+# against the header the lab's app compiles against.
 function(_stoa_lab_folder_includes target lab)
   # The lab's folder and its student/ folder (its header, labNN.hpp), and the
   # student/ folders of the labs it uses, whose functions it may call.
@@ -106,15 +111,10 @@ endfunction()
 # exported with the framework so that a submission build links it instead of
 # compiling it again: autograder/submission/StoaExport.cmake), the student
 # objects of its track, and a generated source with its build info (labBuildInfo()
-# in stoa/lab/LabBuildInfo.hpp): name, track, lab folder and the GLSL search path. The
-# search path ends with the folders in labs/ of the lab and the labs it uses, so
-# that a GLSL include of a non-student file there is found from any track, as
-# lab03.hpp is for C++ (_stoa_lab_folder_includes); student files come first.
+# in stoa/lab/LabBuildInfo.hpp): name, track, lab folder and the GLSL search path
+# (track roots first, shaders/ last).
 function(_stoa_lab_program lab target output_dir track_name search_path objects)
   get_property(uses GLOBAL PROPERTY STOA_LAB_${lab}_USES)
-  foreach(used IN LISTS uses lab)
-    list(APPEND search_path ${STOA_LABS_DIR}/${used})
-  endforeach()
   set(app stoa_lab_app_${lab})
   if(NOT TARGET ${app})
     get_property(app_sources GLOBAL PROPERTY STOA_LAB_${lab}_APP)
@@ -147,18 +147,19 @@ function(stoa_add_lab)
   cmake_parse_arguments(ARG "" "NAME" "STUDENT_FILES;APP_SOURCES;USES" ${ARGN})
   set(lab ${ARG_NAME})
   set(cpp "")
+  set(student ${lab}/${STOA_STUDENT_FOLDER})
   foreach(file IN LISTS ARG_STUDENT_FILES)
-    if(NOT EXISTS ${STOA_LABS_DIR}/${lab}/${file})
-      message(FATAL_ERROR "stoa_add_lab(${lab}): student file labs/${lab}/${file} does not exist")
+    if(NOT EXISTS ${STOA_LABS_DIR}/${student}/${file})
+      message(FATAL_ERROR "stoa_add_lab(${lab}): student file labs/${student}/${file} does not exist")
     endif()
-    if(EXISTS ${STOA_SOLUTIONS_DIR} AND NOT EXISTS ${STOA_SOLUTIONS_DIR}/${lab}/${file})
-      message(FATAL_ERROR "stoa_add_lab(${lab}): labs/${lab}/${file} has no twin in solutions/${lab}/")
+    if(EXISTS ${STOA_SOLUTIONS_DIR} AND NOT EXISTS ${STOA_SOLUTIONS_DIR}/${student}/${file})
+      message(FATAL_ERROR "stoa_add_lab(${lab}): labs/${student}/${file} has no twin in solutions/${student}/")
     endif()
     if(STOA_TRACK_DIR)
       _stoa_stage_student_file(${lab} ${file})
     endif()
     if(file MATCHES "\\.cpp$")
-      list(APPEND cpp ${lab}/${file})
+      list(APPEND cpp ${student}/${file})
     endif()
   endforeach()
   set(app "")
@@ -281,13 +282,14 @@ endfunction()
 # through links in build/cascade/NN_name/, so edits show without reconfiguring.
 function(_stoa_cascade_program lab uses)
   set(overlay ${CMAKE_BINARY_DIR}/cascade/${lab})
+  set(student ${lab}/${STOA_STUDENT_FOLDER})
   get_property(files GLOBAL PROPERTY STOA_LAB_${lab}_FILES)
-  file(MAKE_DIRECTORY ${overlay}/${lab})
+  file(MAKE_DIRECTORY ${overlay}/${student})
   foreach(file IN LISTS files)
     if(NOT file MATCHES "\\.cpp$")
-      get_filename_component(parent ${overlay}/${lab}/${file} DIRECTORY)
+      get_filename_component(parent ${overlay}/${student}/${file} DIRECTORY)
       file(MAKE_DIRECTORY ${parent})
-      file(CREATE_LINK ${STOA_MAIN_TRACK_DIR}/${lab}/${file} ${overlay}/${lab}/${file} SYMBOLIC)
+      file(CREATE_LINK ${STOA_MAIN_TRACK_DIR}/${student}/${file} ${overlay}/${student}/${file} SYMBOLIC)
     endif()
   endforeach()
   set(objects "")
@@ -310,28 +312,36 @@ function(_stoa_cascade_program lab uses)
 endfunction()
 
 # Copies one student file of a submission (STOA_TRACK_DIR) into the staged track.
-# A file the submission lacks is taken from labs/ (the stub): that lab grades
-# "not attempted" instead of failing to configure.
+# The file is looked for at NN_name/student/FILE, then where releases before the
+# student/ folders kept it (NN_name/FILE). A file the submission lacks is taken
+# from labs/ (the stub): that lab grades "not attempted" instead of failing to
+# configure.
 function(_stoa_stage_student_file lab file)
-  set(from ${STOA_TRACK_DIR}/${lab}/${file})
+  set(student ${lab}/${STOA_STUDENT_FOLDER})
+  set(from ${STOA_TRACK_DIR}/${student}/${file})
+  if(NOT EXISTS ${from} AND NOT IS_SYMLINK ${from} AND (EXISTS ${STOA_TRACK_DIR}/${lab}/${file} OR IS_SYMLINK ${STOA_TRACK_DIR}/${lab}/${file}))
+    message(STATUS "the submission has ${lab}/${file} where older releases kept it; grading it as ${student}/${file}")
+    set(from ${STOA_TRACK_DIR}/${lab}/${file})
+  endif()
   if(IS_SYMLINK ${from})
     # The grader's configure may read only the submission's own files.
     file(READ_SYMLINK ${from} link_target)
-    message(FATAL_ERROR "error: the submission's ${lab}/${file} is a symbolic link (to ${link_target}); "
+    file(RELATIVE_PATH shown ${STOA_TRACK_DIR} ${from})
+    message(FATAL_ERROR "error: the submission's ${shown} is a symbolic link (to ${link_target}); "
                         "hand in the file itself")
   endif()
   if(NOT EXISTS ${from})
-    message(WARNING "the submission has no ${lab}/${file}; using the stub from labs/")
-    set(from ${STOA_LABS_DIR}/${lab}/${file})
+    message(WARNING "the submission has no ${student}/${file}; using the stub from labs/")
+    set(from ${STOA_LABS_DIR}/${student}/${file})
   endif()
-  configure_file(${from} ${STOA_MAIN_TRACK_DIR}/${lab}/${file} COPYONLY)
+  configure_file(${from} ${STOA_MAIN_TRACK_DIR}/${student}/${file} COPYONLY)
 endfunction()
 
 # A .mistake file:
 #   hint: what the student sees when their image looks like this mistake
 #   docs: labs/01_transforms.md#the-view-matrix
 #   fails: case_a case_b            (cases this mistake must fail)
-#   file: transforms.cpp            (a student file of the lab)
+#   file: transforms.cpp            (a student file of the lab, in its student/ folder)
 #   --- find
 #   <exact lines of the solution>
 #   --- replace
@@ -347,9 +357,10 @@ function(_stoa_apply_mistake mistake_file lab overlay out)
   if(file STREQUAL "")
     message(FATAL_ERROR "${mistake_file}: missing 'file:' line naming the student file to change")
   endif()
-  set(original ${STOA_SOLUTIONS_DIR}/${lab}/${file})
+  set(student ${lab}/${STOA_STUDENT_FOLDER})
+  set(original ${STOA_SOLUTIONS_DIR}/${student}/${file})
   if(NOT EXISTS ${original})
-    message(FATAL_ERROR "${mistake_file}: file: ${file} is not in solutions/${lab}/")
+    message(FATAL_ERROR "${mistake_file}: file: ${file} is not in solutions/${student}/")
   endif()
   string(FIND "${text}" "--- find\n" find_at)
   string(FIND "${text}" "--- replace\n" replace_at)
@@ -372,17 +383,17 @@ function(_stoa_apply_mistake mistake_file lab overlay out)
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${original})
   string(FIND "${source}" "${find}" first)
   if(first LESS 0)
-    message(FATAL_ERROR "${mistake_file}: the '--- find' text does not occur in solutions/${lab}/${file}; "
+    message(FATAL_ERROR "${mistake_file}: the '--- find' text does not occur in solutions/${student}/${file}; "
                         "update the mistake to match the solution")
   endif()
   string(FIND "${source}" "${find}" last REVERSE)
   if(NOT first EQUAL last)
-    message(FATAL_ERROR "${mistake_file}: the '--- find' text occurs more than once in solutions/${lab}/${file}")
+    message(FATAL_ERROR "${mistake_file}: the '--- find' text occurs more than once in solutions/${student}/${file}")
   endif()
   string(REPLACE "${find}" "${replace}" patched "${source}")
-  file(MAKE_DIRECTORY ${overlay}/${lab})
+  file(MAKE_DIRECTORY ${overlay}/${student})
   # Write only on change, so a reconfigure does not rebuild every mistake.
-  set(target_file ${overlay}/${lab}/${file})
+  set(target_file ${overlay}/${student}/${file})
   if(EXISTS ${target_file})
     file(READ ${target_file} previous)
   else()

@@ -1,5 +1,5 @@
 // Lab 02 app: the shapes scene lit with the student's Blinn-Phong shaders
-// (shaders/forward/blinn_phong.* include labs/02_shading/*.glsl), through the
+// (shaders/forward/blinn_phong.* include labs/02_shading/student/*.glsl), through the
 // student's lab-01 matrices and cameras.
 //
 // Case keys besides the camera's (CameraRig.hpp):

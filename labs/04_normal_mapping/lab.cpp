@@ -1,7 +1,7 @@
 // Lab 04 app: a stretch of the Acropolis wall (assets/acropolis/wall.obj),
 // bump mapped with the normal map the student builds from its height map,
 // lit in tangent space (shaders/normal_mapping/normal_mapped.* include
-// labs/04_normal_mapping/tangent_space.glsl and lab 02's lighting.glsl).
+// labs/04_normal_mapping/student/tangent_space.glsl and lab 02's lighting.glsl).
 // Beside the wall: a second piece of it with its u mirrored (where the
 // tangent's handedness matters) and a bumped boulder (curved tangent frames).
 //

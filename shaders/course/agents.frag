@@ -1,6 +1,6 @@
 #version 330 core
 #include "common/frame.glsl"
-#include "08_deferred/g_buffer.glsl"
+#include "08_deferred/student/g_buffer.glsl"
 // A crowd's characters (crowd/md2.vert: lab 10's blended MD2 poses) into the
 // course pipeline's G-buffer: the skin's colour, a little specular, the normal
 // in view space, by lab 08's writeGBuffer().

@@ -1,7 +1,7 @@
 #version 330 core
 #include "common/frame.glsl"
-#include "04_normal_mapping/tangent_space.glsl"
-#include "08_deferred/g_buffer.glsl"
+#include "04_normal_mapping/student/tangent_space.glsl"
+#include "08_deferred/student/g_buffer.glsl"
 // The course pipeline's geometry pass: albedo, specular strength and the
 // normal (bent by the normal map through lab 04's unpackNormal()) into the
 // G-buffer by lab 08's writeGBuffer(). uTint colours an object by its level of

@@ -1,6 +1,6 @@
 #version 330 core
 #include "common/frame.glsl"   // the per-frame uniform block
-#include "04_normal_mapping/tangent_space.glsl"
+#include "04_normal_mapping/student/tangent_space.glsl"
 // The course pipeline's geometry pass (stoa/render/CourseRenderer.hpp): positions
 // to clip space; the normal, or with a normal map the student's tangent frame
 // (lab 04), to view space for the G-buffer (lab 08).

@@ -1,9 +1,9 @@
 #version 330 core
 #include "common/frame.glsl"
-#include "08_deferred/g_buffer.glsl"
+#include "08_deferred/student/g_buffer.glsl"
 #include "deferred/gbuffer_read.glsl"
 #include "deferred/lighting.glsl"
-#include "05_shadows/shadows.glsl"
+#include "05_shadows/student/shadows.glsl"
 // The course pipeline's sun (stoa/render/CourseRenderer.hpp), added to the
 // light buffer after the point lights: Blinn-Phong from the G-buffer times s,
 // the shadow factor of the cascade the student's cascades.glsl picks (lab 05).
@@ -40,7 +40,7 @@ float cascadeMapFactor(int cascade, vec3 coordinates, float bias, int pcfMode) {
     return 1.0;
 }
 
-#include "05_shadows/cascades.glsl"
+#include "05_shadows/student/cascades.glsl"
 
 // Red, green, blue, yellow: near to far, as lab 05's cascade cases.
 vec3 cascadeTint(int cascade) {

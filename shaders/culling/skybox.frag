@@ -1,5 +1,5 @@
 #version 330 core
-#include "06_culling/skybox.glsl"
+#include "06_culling/student/skybox.glsl"
 // Lab 06's sky: the cube map (assets/sky/) looked up by the student's skyColor().
 
 in vec3 vDirection;

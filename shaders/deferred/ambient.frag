@@ -1,6 +1,6 @@
 #version 330 core
 #include "common/frame.glsl"
-#include "08_deferred/g_buffer.glsl"
+#include "08_deferred/student/g_buffer.glsl"
 #include "deferred/gbuffer_read.glsl"
 #include "deferred/lighting.glsl"
 #include "deferred/ambient_light.glsl"

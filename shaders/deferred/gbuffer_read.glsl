@@ -1,6 +1,6 @@
 // Reading the G-buffer in a lighting pass (labs 08-09): one pixel's albedo,
 // specular strength, view-space normal and position, through the student's
-// unpackNormal() and viewPositionFromDepth() (08_deferred/g_buffer.glsl).
+// unpackNormal() and viewPositionFromDepth() (08_deferred/student/g_buffer.glsl).
 // Include after g_buffer.glsl. No student code here.
 
 uniform sampler2D uAlbedoSpecular;    // GBuffer attachment 0

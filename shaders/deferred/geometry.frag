@@ -1,6 +1,6 @@
 #version 330 core
 #include "common/frame.glsl"
-#include "08_deferred/g_buffer.glsl"
+#include "08_deferred/student/g_buffer.glsl"
 // The geometry pass of labs 08-09: each pixel's albedo, specular strength and
 // normal, written into the G-buffer by the student's writeGBuffer().
 

@@ -1,6 +1,6 @@
 #version 330 core
 #include "common/frame.glsl"
-#include "08_deferred/g_buffer.glsl"
+#include "08_deferred/student/g_buffer.glsl"
 #include "deferred/gbuffer_read.glsl"
 #include "deferred/lighting.glsl"
 // Lab 08's light-volume pass: each fragment of a light's sphere lights the

@@ -1,6 +1,6 @@
 #version 330 core
 #include "common/frame.glsl"
-#include "08_deferred/g_buffer.glsl"
+#include "08_deferred/student/g_buffer.glsl"
 #include "deferred/gbuffer_read.glsl"
 // The pictures of labs 08-09 besides the lit one, and the lit one itself:
 //   uMode 0  the lit picture (uImage, the light accumulation), clamped to [0, 1]

@@ -2,7 +2,7 @@
 // Lab 02's fragment stage: ambient plus every light, each lit by the student's
 // lighting.glsl. docs/labs/02_shading.md explains the sum.
 #include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
-#include "02_shading/lighting.glsl"
+#include "02_shading/student/lighting.glsl"
 
 in vec3 vPositionWorld;
 in vec3 vNormalWorld;

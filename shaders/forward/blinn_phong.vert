@@ -1,7 +1,7 @@
 #version 330 core
 #include "common/frame.glsl"   // the per-frame uniform block
 // Lab 02's vertex stage: the transforms come from the student's transform.glsl.
-#include "02_shading/transform.glsl"
+#include "02_shading/student/transform.glsl"
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;

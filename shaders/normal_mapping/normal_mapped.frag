@@ -1,10 +1,10 @@
 #version 330 core
 // Lab 04's fragment stage: lab 02's Blinn-Phong in tangent space, with the
-// normal from the normal map (04_normal_mapping/tangent_space.glsl unpacks it).
+// normal from the normal map (04_normal_mapping/student/tangent_space.glsl unpacks it).
 // docs/labs/04_normal_mapping.md, "Lighting in tangent space".
 #include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
-#include "02_shading/lighting.glsl"
-#include "04_normal_mapping/tangent_space.glsl"
+#include "02_shading/student/lighting.glsl"
+#include "04_normal_mapping/student/tangent_space.glsl"
 
 #define BUMP_DIRECTIONAL_LIGHTS 2
 #define BUMP_POINT_LIGHTS 2

@@ -4,8 +4,8 @@
 // the fragment stage lights with the normal map's normals as they are stored.
 // docs/labs/04_normal_mapping.md, "Lighting in tangent space".
 #include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
-#include "02_shading/transform.glsl"
-#include "04_normal_mapping/tangent_space.glsl"
+#include "02_shading/student/transform.glsl"
+#include "04_normal_mapping/student/tangent_space.glsl"
 
 // The lights lab 04 lights with: the first two of each kind (each costs a varying).
 #define BUMP_DIRECTIONAL_LIGHTS 2

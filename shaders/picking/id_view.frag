@@ -1,5 +1,5 @@
 #version 330 core
-#include "07_picking/id_buffer.glsl"
+#include "07_picking/student/id_buffer.glsl"
 // Lab 07's ID buffer in false colour: each id, unpacked by the student's
 // unpackObjectId(), gets a colour of its own (a hash of all 32 bits), the
 // background black. Drawn over the viewport with basic/image.vert.

@@ -1,5 +1,5 @@
 #version 330 core
-#include "07_picking/id_buffer.glsl"
+#include "07_picking/student/id_buffer.glsl"
 // Lab 07's ID pass: the object's 32-bit id, packed by the student's
 // packObjectId() into the four bytes of a GL_RGBA8UI target. 0 is the
 // background (the clear value).

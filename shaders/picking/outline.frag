@@ -1,5 +1,5 @@
 #version 330 core
-#include "07_picking/id_buffer.glsl"
+#include "07_picking/student/id_buffer.glsl"
 // Lab 07's selection outline, a pass over the whole picture after the scene:
 // the student's outlineAt() on the ID buffer says where; elsewhere the picture
 // stays as it is. Drawn over the viewport with basic/image.vert.

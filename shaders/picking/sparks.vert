@@ -1,6 +1,6 @@
 #version 330 core
 #include "common/frame.glsl"   // the per-frame uniform block
-#include "07_picking/particles.glsl"
+#include "07_picking/student/particles.glsl"
 // Lab 07's sparks: one square per spark (four vertices as a triangle strip,
 // drawn instanced), turned to the camera by the student's billboardCorner().
 

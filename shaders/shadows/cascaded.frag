@@ -5,8 +5,8 @@
 // cascade cases load this program, so cascades.glsl's stubs leave the other
 // cases alone.
 #include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
-#include "02_shading/lighting.glsl"
-#include "05_shadows/shadows.glsl"
+#include "02_shading/student/lighting.glsl"
+#include "05_shadows/student/shadows.glsl"
 
 #define MAX_CASCADES 4
 
@@ -36,7 +36,7 @@ float cascadeMapFactor(int cascade, vec3 coordinates, float bias, int pcfMode) {
     return 1.0;
 }
 
-#include "05_shadows/cascades.glsl"
+#include "05_shadows/student/cascades.glsl"
 
 // Red, green, blue, yellow: near to far.
 vec3 cascadeTint(int cascade) {

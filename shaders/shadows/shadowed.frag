@@ -3,8 +3,8 @@
 // lit by the student's lab-02 lighting.glsl, dimmed where the student's
 // shadows.glsl finds the point hidden from the light (docs/labs/05_shadows.md).
 #include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
-#include "02_shading/lighting.glsl"
-#include "05_shadows/shadows.glsl"
+#include "02_shading/student/lighting.glsl"
+#include "05_shadows/student/shadows.glsl"
 
 in vec3 vPositionWorld;
 in vec3 vNormalWorld;

@@ -1,13 +1,13 @@
 #version 330 core
 #include "common/frame.glsl"           // uProjection
-#include "08_deferred/g_buffer.glsl"   // your lab-08 unpackNormal(), viewPositionFromDepth()
+#include "08_deferred/student/g_buffer.glsl"   // your lab-08 unpackNormal(), viewPositionFromDepth()
 #include "deferred/gbuffer_read.glsl"
 // Lab 09's occlusion pass: one value per pixel, 1 open to the sky, 0 fully
-// occluded, from the student's ambientOcclusion() (09_ssao/ssao.glsl). The sky
+// occluded, from the student's ambientOcclusion() (09_ssao/student/ssao.glsl). The sky
 // (nothing drawn) gets 1.
 
 #include "ssao/ssao_inputs.glsl"
-#include "09_ssao/ssao.glsl"
+#include "09_ssao/student/ssao.glsl"
 
 out vec4 fragAo;
 

@@ -4,8 +4,8 @@
 // lighting.glsl. The maps and their flags are MeshObject's uniforms
 // (framework/include/stoa/scene/MeshObject.hpp).
 #include "common/frame.glsl"   // the per-frame uniform block, with lights.glsl
-#include "02_shading/lighting.glsl"
-#include "03_meshes/textures.glsl"
+#include "02_shading/student/lighting.glsl"
+#include "03_meshes/student/textures.glsl"
 
 in vec3 vPositionWorld;
 in vec3 vNormalWorld;

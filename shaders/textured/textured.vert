@@ -2,8 +2,8 @@
 #include "common/frame.glsl"   // the per-frame uniform block
 // Lab 03's vertex stage: lab 02's transforms (the student's transform.glsl)
 // and lab 03's texture coordinates (textures.glsl).
-#include "02_shading/transform.glsl"
-#include "03_meshes/textures.glsl"
+#include "02_shading/student/transform.glsl"
+#include "03_meshes/student/textures.glsl"
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;

@@ -33,6 +33,6 @@ if [ "${STOA_BENCH_BUILD:-1}" = 1 ]; then
   clean="$work/clean-build"
   cmake -S "$root" -B "$clean" -DSTOA_USE_SOLUTIONS=ON -DSTOA_BUILD_TESTS=OFF >/dev/null
   report "clean build, solutions track, no tests (-j$(nproc))" "$(seconds cmake --build "$clean" -j"$(nproc)")" 1
-  touch "$root/solutions/01_transforms/transforms.cpp"
-  report "rebuild after touching solutions/01_transforms/transforms.cpp" "$(seconds cmake --build "$clean" -j"$(nproc)")" 1
+  touch "$root/solutions/01_transforms/student/transforms.cpp"
+  report "rebuild after touching solutions/01_transforms/student/transforms.cpp" "$(seconds cmake --build "$clean" -j"$(nproc)")" 1
 fi

@@ -162,12 +162,10 @@ int main(int argc, char** argv) {
         std::printf("%s\n", context.description().c_str());
 
         // The search path of lab 09's program in a solutions build
-        // (framework/cmake/StoaLab.cmake): 08_deferred/g_buffer.glsl and
-        // 09_ssao/ssao.glsl from solutions/, then shaders/, then the labs' folders.
+        // (framework/cmake/StoaLab.cmake): 08_deferred/student/g_buffer.glsl and
+        // 09_ssao/student/ssao.glsl from solutions/, then shaders/.
         const std::filesystem::path solutions = STOA_SOLUTIONS_DIR;
-        const std::filesystem::path labs = STOA_LABS_DIR;
-        const std::vector<std::filesystem::path> searchPath{solutions, stoa::paths::shadersDir(), labs / "08_deferred",
-                                                            labs / "09_ssao"};
+        const std::vector<std::filesystem::path> searchPath{solutions, stoa::paths::shadersDir()};
         stoa::LabResources resources(searchPath);
         const auto load = [&](const std::string& vertex, const std::string& fragment) -> const stoa::Program& {
             return resources.loadProgram(vertex, fragment);

@@ -26,6 +26,7 @@ for lab_dir in "$source"/labs/[0-9][0-9]_*/; do
           grep -oE '[A-Za-z0-9_/]+\.cpp' || true)
   largest=""
   for file in $files; do
+    file=student/$file
     if [ -z "$largest" ] || [ "$(wc -c < "$lab_dir/$file")" -gt "$(wc -c < "$lab_dir/$largest")" ]; then largest=$file; fi
   done
   rebuilds=() grades=()

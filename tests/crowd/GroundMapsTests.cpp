@@ -15,7 +15,7 @@
 //     seen from above (its normal's y > 0, whatever the heights), smooth
 //     normals of unit length and straight up on flat ground; a 1 x 1 field gives
 //     one quad over the footprint.
-// writeExampleGroundMaps needs the stoa library: tests/labs/crowds_test.cpp.
+// writeExampleGroundMaps needs the stoa library: tests/labs/GroundTests.cpp.
 
 #include "catch.hpp"
 #include "TempFolder.hpp"

@@ -31,7 +31,7 @@ for student in aaa_mallory mmm_peeker zzz_victim; do
 done
 
 # The saboteur, appended to a correct transforms.cpp. It prints one line per attempt.
-cat >> "$subs/aaa_mallory/labs/01_transforms/transforms.cpp" <<CPP
+cat >> "$subs/aaa_mallory/labs/01_transforms/student/transforms.cpp" <<CPP
 
 #include <cerrno>
 #include <cstdio>
@@ -92,7 +92,7 @@ void sabotage() {
         }
         for (const auto& student : fs::directory_iterator(submissions, error)) {
             if (student.path().filename() == "aaa_mallory") continue;
-            fs::path victim = student.path() / "labs" / "01_transforms" / "transforms.cpp";
+            fs::path victim = student.path() / "labs" / "01_transforms" / "student" / "transforms.cpp";
             std::string text = sabotageRead(victim.string());
             if (text.empty()) say("sabotage: cannot read %s: %s\n", victim.c_str(), std::strerror(errno));
             else say("sabotage: read %zu bytes of %s\n", text.size(), victim.c_str());
@@ -122,8 +122,8 @@ const bool kSabotaged = [] {
 CPP
 
 # The peeker's file includes the victim's by absolute path.
-peeker=$subs/mmm_peeker/labs/01_transforms/cameras.cpp
-{ echo "#include \"$subs/zzz_victim/labs/01_transforms/cameras.cpp\""; cat "$peeker"; } > "$peeker.new"
+peeker=$subs/mmm_peeker/labs/01_transforms/student/cameras.cpp
+{ echo "#include \"$subs/zzz_victim/labs/01_transforms/student/cameras.cpp\""; cat "$peeker"; } > "$peeker.new"
 mv "$peeker.new" "$peeker"
 
 record() { (cd "$subs" && find . -type f -print0 | sort -z | xargs -0 sha256sum); }

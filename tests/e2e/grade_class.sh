@@ -8,7 +8,9 @@
 #                  using its code) "does not compile"; the batch goes on
 #   dave/          finished, with a planted mistake in the first lab that a later lab
 #                  uses: that lab fails, but the later lab gets full marks from its
-#                  cascade run (graded with the earlier lab's solution; Cascade.hpp)
+#                  cascade run (graded with the earlier lab's solution; Cascade.hpp).
+#                  In the layout of releases before the student/ folders (his files
+#                  at labs/NN_name/FILE), which the grader still accepts.
 # Then checks the gradebook rows and each student's results.json.
 #
 #   [STOA_GRADE_CLASS_STUDENTS="alice dave"] grade_class.sh <stoa-grade-class> <stoa-grade> <source dir> <work dir>
@@ -44,7 +46,7 @@ fi
 broken_lab=""
 if wanted carol; then
   python3 "$make_submission" "$source" "$work/make/carol/labs"
-  broken=$(cd "$work/make/carol/labs" && ls -d [0-9][0-9]_*/*.cpp | grep -v '/lab.cpp$' | head -1)
+  broken=$(cd "$work/make/carol/labs" && ls -d [0-9][0-9]_*/student/*.cpp | head -1)
   echo "this is not C++;" >> "$work/make/carol/labs/$broken"
   (cd "$work/make/carol" && tar -czf "$work/submissions/carol.tar.gz" labs)
   broken_lab=${broken%%/*}
@@ -64,12 +66,17 @@ text = open(mistake).read()
 name = re.search(r"^file:\s*(\S+)", text, re.M).group(1)
 find = text.split("--- find\n", 1)[1].split("--- replace\n", 1)[0]
 replace = text.split("--- replace\n", 1)[1].split("--- end", 1)[0]
-path = os.path.join(labs, lab, name)
+path = os.path.join(labs, lab, "student", name)
 code = open(path).read()
 assert code.count(find) == 1, f"{mistake}: the find text is not in {path} once"
 open(path, "w").write(code.replace(find, replace))
 print(f"dave's {lab} has the mistake {os.path.basename(mistake)}")
 PY
+  # The layout of older releases: each lab's student files beside its app.
+  for folder in "$work/submissions/dave/labs"/[0-9][0-9]_*/student; do
+    find "$folder" -maxdepth 1 -type f ! -name 'lab[0-9][0-9].hpp' -exec mv {} "$folder/.." \;
+    rm -rf "$folder"
+  done
 fi
 
 "$grade_class" "$work/submissions" --out "$work/out" --jobs 2

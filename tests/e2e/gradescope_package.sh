@@ -50,7 +50,7 @@ for lab in labs:
     files = re.search(r"STUDENT_FILES([^)]*?)(APP_SOURCES|USES|\))", text[lab.name], re.S).group(1).split()
     cpp = [f for f in files if f.endswith(".cpp")]
     if cpp and lab.name not in used:
-        print(f"{lab.name}/{cpp[0]}")
+        print(f"{lab.name}/student/{cpp[0]}")
         break
 PY
 )

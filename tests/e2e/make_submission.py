@@ -12,7 +12,7 @@ GLSL that returns STOA_NOT_IMPLEMENTED, either marked TODO(labNN)) is replaced
 by the body of the function of the same name in the solution's twin, and what
 the solution adds around its functions (#includes, helpers, constants) is added
 where the solution has it. The grading tests grade what this makes, so a stub
-that includes its lab's header (03_meshes/normals.cpp includes lab03.hpp) is
+that includes its lab's header (03_meshes/student/normals.cpp includes lab03.hpp) is
 graded as a student's would be.
 
 It never writes a stub silently: a stubbed function without a twin in the
@@ -249,11 +249,12 @@ def fill_student_files(labs, solutions, dest):
         if not (lab_dir / "CMakeLists.txt").is_file():
             continue
         for name in student_files(lab_dir):
-            where_stub, where_solution = f"labs/{lab_dir.name}/{name}", f"solutions/{lab_dir.name}/{name}"
-            if not (solutions / lab_dir.name / name).is_file():
+            student = f"{lab_dir.name}/student/{name}"
+            where_stub, where_solution = f"labs/{student}", f"solutions/{student}"
+            if not (solutions / student).is_file():
                 raise SubmissionError(f"{where_stub} has no twin {where_solution}")
-            text, pasted = paste_solution(lab_dir / name, solutions / lab_dir.name / name, where_stub, where_solution)
-            (dest / lab_dir.name / name).write_text(text)
+            text, pasted = paste_solution(labs / student, solutions / student, where_stub, where_solution)
+            (dest / student).write_text(text)
             files += 1
             functions += len(pasted)
     if files == 0:

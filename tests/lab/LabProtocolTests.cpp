@@ -16,7 +16,7 @@ using stoa::parseCheckVerdictLine;
 using stoa::parseNotImplementedLine;
 
 TEST_CASE("LabProtocol: the not-implemented line reads back what was not implemented") {
-    for (const std::string what : {"Camera::viewMatrix()", "shadowFactor (05_shadows/shadows.glsl:12)", "a: b: c"}) {
+    for (const std::string what : {"Camera::viewMatrix()", "shadowFactor (05_shadows/student/shadows.glsl:12)", "a: b: c"}) {
         INFO(what);
         CHECK(notImplementedLine(what) == "stoa: not implemented: " + what);
         CHECK(parseNotImplementedLine(notImplementedLine(what)) == what);
