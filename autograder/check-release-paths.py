@@ -3,14 +3,14 @@
 
 Run by make-release.sh on the student release: every file that a page or comment a
 student reads points at must be in the release. A student told to read
-`tests/labs/normals_test.cpp` or to run `build/bin/stoa-tests-labs` in a release
+`tests/labs/NormalsTests.cpp` or to run `build/bin/stoa-tests-labs` in a release
 that leaves them out is sent nowhere.
 
 What is read: docs/ (but the instructor guide), labs/, shaders/, framework/
 (sources, shaders, pages and manifests; not the build files), README.md and the
 galleries' mistake.txt files (not their header comment, written for instructors). What counts as a pointer: a path
 that starts with one of the tree's top-level folders and names a file (its last
-part has an extension, e.g. `tests/labs/cascades_test.cpp`, or is a pattern such as
+part has an extension, e.g. `tests/labs/CascadesTests.cpp`, or is a pattern such as
 `shaders/basic/headlight.*`), or a program under `build/bin/`. Placeholders match
 anything: `NN_name`, `NN`, `<lab>`, `CASE`, `*`. A path is found when it exists from
 the release's top or from the folder of the file that names it.

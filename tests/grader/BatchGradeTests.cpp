@@ -57,15 +57,15 @@ TEST_CASE("studentName drops the archive extension and odd characters") {
 
 TEST_CASE("findLabsFolder finds labs/ at the top, one folder down, or the lab folders themselves") {
     test::TempFolder folder("batch-labs");
-    folder.write("top/labs/01_transforms/transforms.cpp", "");
+    folder.write("top/labs/01_transforms/student/transforms.cpp", "");
     CHECK(findLabsFolder(folder / "top") == folder / "top" / "labs");
 
-    folder.write("nested/alice-main/labs/01_transforms/transforms.cpp", "");
+    folder.write("nested/alice-main/labs/01_transforms/student/transforms.cpp", "");
     folder.write("nested/__MACOSX/junk", "");
     folder.write("nested/.hidden", "");
     CHECK(findLabsFolder(folder / "nested") == folder / "nested" / "alice-main" / "labs");
 
-    folder.write("bare/01_transforms/transforms.cpp", "");
+    folder.write("bare/01_transforms/student/transforms.cpp", "");
     CHECK(findLabsFolder(folder / "bare") == folder / "bare");
 
     folder.write("empty/readme.txt", "");
@@ -95,28 +95,28 @@ TEST_CASE("findSubmissions takes folders and archives, skips the rest, refuses t
 
 TEST_CASE("A staged submission is a copy: links stay links, and a changed input is named") {
     test::TempFolder folder("batch-stage");
-    folder.write("subs/alice/labs/01_transforms/transforms.cpp", "int a;\n");
-    folder.write("subs/alice/labs/01_transforms/cameras.cpp", "int b;\n");
+    folder.write("subs/alice/labs/01_transforms/student/transforms.cpp", "int a;\n");
+    folder.write("subs/alice/labs/01_transforms/student/cameras.cpp", "int b;\n");
     folder.write("elsewhere/secret.cpp", "int secret;\n");
     std::filesystem::create_symlink(folder / "elsewhere/secret.cpp", folder / "subs/alice/labs/link.cpp");
     Submission alice{"alice", folder / "subs/alice", SubmissionKind::Folder};
 
     std::vector<InputFile> before = recordInputs(alice);
     REQUIRE(before.size() == 3);
-    CHECK(before[0].path == "labs/01_transforms/cameras.cpp");
+    CHECK(before[0].path == "labs/01_transforms/student/cameras.cpp");
     std::filesystem::path labs = stageSubmission(alice, folder / "stage");
     CHECK(labs == folder / "stage" / "labs");
-    CHECK(std::filesystem::is_regular_file(labs / "01_transforms/transforms.cpp"));
+    CHECK(std::filesystem::is_regular_file(labs / "01_transforms/student/transforms.cpp"));
     CHECK(std::filesystem::is_symlink(labs / "link.cpp"));   // a link, never followed by the grader
     CHECK(changedInputs(before, recordInputs(alice)).empty());
 
-    folder.write("subs/alice/labs/01_transforms/transforms.cpp", "#error sabotaged\n");
+    folder.write("subs/alice/labs/01_transforms/student/transforms.cpp", "#error sabotaged\n");
     folder.write("subs/alice/labs/new.cpp", "");
-    std::filesystem::remove(folder / "subs/alice/labs/01_transforms/cameras.cpp");
+    std::filesystem::remove(folder / "subs/alice/labs/01_transforms/student/cameras.cpp");
     CHECK(changedInputs(before, recordInputs(alice)) ==
-          std::vector<std::string>{"labs/01_transforms/transforms.cpp", "labs/new.cpp (new)",
-                                   "labs/01_transforms/cameras.cpp (gone)"});
-    CHECK(inputsText(before).find("  labs/01_transforms/transforms.cpp\n") != std::string::npos);
+          std::vector<std::string>{"labs/01_transforms/student/transforms.cpp", "labs/new.cpp (new)",
+                                   "labs/01_transforms/student/cameras.cpp (gone)"});
+    CHECK(inputsText(before).find("  labs/01_transforms/student/transforms.cpp\n") != std::string::npos);
 }
 
 TEST_CASE("addResults sums points per lab from results.json and names what did not pass") {

@@ -198,10 +198,10 @@ void checkConfined(bool preferMounts) {
     const std::string classmateSource = "void secret() {}\n";
     const std::string solution = "// the solution\n";
     const std::string grades = "{\"score\": 3}\n";
-    std::filesystem::path classmate = folder.write("submissions/zzz_victim/labs/01_transforms/transforms.cpp",
+    std::filesystem::path classmate = folder.write("submissions/zzz_victim/labs/01_transforms/student/transforms.cpp",
                                                    classmateSource);
     std::filesystem::path tree = folder.path() / "stoa";
-    std::filesystem::path solutionFile = folder.write("stoa/solutions/01_transforms/transforms.cpp", solution);
+    std::filesystem::path solutionFile = folder.write("stoa/solutions/01_transforms/student/transforms.cpp", solution);
     std::filesystem::path resultsFile = folder.write("grades/aaa_mallory/results.json", grades);
     setenv("STOA_HOSTILE_CLASSMATE", classmate.c_str(), 1);
     setenv("STOA_HOSTILE_SOLUTIONS", solutionFile.c_str(), 1);

@@ -212,9 +212,9 @@ TEST_CASE("printReport: a lab where nothing was attempted names the stub its fir
           "[grader][report]") {
     const std::vector<GradeResult> results = {
         result("09_ssao", "column_bases_raw", GradeStatus::NotAttempted, 0, 2,
-               "not implemented: blurAmbientOcclusion (/home/student/stoa/labs/09_ssao/ssao.glsl:67)"),
+               "not implemented: blurAmbientOcclusion (/home/student/stoa/labs/09_ssao/student/ssao.glsl:67)"),
         result("09_ssao", "statue_final", GradeStatus::NotAttempted, 0, 2,
-               "not implemented: blurAmbientOcclusion (/home/student/stoa/labs/09_ssao/ssao.glsl:67)"),
+               "not implemented: blurAmbientOcclusion (/home/student/stoa/labs/09_ssao/student/ssao.glsl:67)"),
         result("06_culling", "field_walk", GradeStatus::NotAttempted, 0, 2, "not implemented: meshBoundingSphere()"),
     };
     std::ostringstream out;

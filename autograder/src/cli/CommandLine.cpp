@@ -3,14 +3,12 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <utility>
+#include <vector>
 
 namespace stoa::grader {
 
 namespace {
-
-const char* const kOptionList =
-    "--lab, --case, --bin-dir, --backend, --json, --html, --junit, --timeout, --jobs, --work-dir, --shader-cache, --private, --expect, "
-    "--update-references, --check-mistakes, --check-hints, --determinism, --write-heatmap-legend, --help";
 
 double parsePositiveNumber(const std::string& option, const std::string& text) {
     errno = 0;
@@ -30,129 +28,150 @@ int parseJobCount(const std::string& text) {
     return static_cast<int>(value);
 }
 
-} // namespace
-
-Options parseCommandLine(const std::vector<std::string>& arguments) {
-    Options options;
+// The modes asked for; which one runs is decided once every option is read.
+struct ModeFlags {
     bool updateReferences = false;
     bool checkMistakes = false;
     bool determinism = false;
     bool help = false;
+};
 
-    for (std::size_t i = 0; i < arguments.size(); ++i) {
-        std::string option = arguments[i];
-        std::optional<std::string> inlineValue;
-        if (option.rfind("--", 0) == 0) {
-            std::size_t equals = option.find('=');
-            if (equals != std::string::npos) {
-                inlineValue = option.substr(equals + 1);
-                option = option.substr(0, equals);
-            }
-        }
-        auto takeValue = [&](const char* what) -> std::string {
-            if (inlineValue) {
-                if (inlineValue->empty()) throw UsageError(option + " needs " + what + " after '='");
-                return *inlineValue;
-            }
-            if (i + 1 >= arguments.size() || arguments[i + 1].rfind("--", 0) == 0)
-                throw UsageError(option + " needs " + what);
-            return arguments[++i];
-        };
-        auto noValue = [&]() {
-            if (inlineValue) throw UsageError(option + " takes no value");
-        };
+// One option: its name, what its value is (nullptr: it takes none), and what it sets.
+struct OptionSpec {
+    const char* name;
+    const char* value;
+    void (*apply)(Options& options, ModeFlags& modes, const std::string& value);
+};
 
-        if (option == "--lab") {
-            options.labs.push_back(takeValue("a lab, such as 01_transforms or 01"));
-        } else if (option == "--case") {
-            options.cases.push_back(takeValue("a case name, such as orbit_front"));
-        } else if (option == "--bin-dir") {
-            options.binDir = takeValue("a folder with the lab programs, such as build/bin");
-        } else if (option == "--backend") {
-            options.backend = takeValue("osmesa or egl");
-            if (options.backend != "osmesa" && options.backend != "egl")
-                throw UsageError("--backend must be osmesa or egl, got '" + options.backend + "'");
-        } else if (option == "--json") {
-            options.jsonFile = takeValue("a file to write, such as results.json");
-        } else if (option == "--html") {
-            options.htmlFile = takeValue("a file to write, such as report.html");
-        } else if (option == "--junit") {
-            options.junitFile = takeValue("a file to write, such as junit.xml");
-        } else if (option == "--timeout") {
-            options.timeoutSeconds = parsePositiveNumber(option, takeValue("a number of seconds"));
-        } else if (option == "--jobs") {
-            options.jobs = parseJobCount(takeValue("a number of cases to render at once"));
-        } else if (option == "--work-dir") {
-            options.workDir = takeValue("a folder for the rendered images");
-        } else if (option == "--shader-cache") {
-            options.shaderCache = takeValue("a folder for Mesa's shader cache");
-        } else if (option == "--private") {
-            options.privateDirs.push_back(takeValue("a folder the lab programs may not see"));
-        } else if (option == "--expect") {
-            std::string status = takeValue("pass or not-attempted");
-            if (status == "pass")
-                options.expect = GradeStatus::Passed;
-            else if (status == "not-attempted")
-                options.expect = GradeStatus::NotAttempted;
-            else
-                throw UsageError("--expect must be pass or not-attempted, got '" + status + "'");
-        } else if (option == "--update-references") {
-            noValue();
-            updateReferences = true;
-        } else if (option == "--determinism") {
-            noValue();
-            determinism = true;
-        } else if (option == "--check-mistakes") {
-            noValue();
-            checkMistakes = true;
-        } else if (option == "--check-hints") {
-            options.outOfGalleryDir = takeValue("a folder of mistakes outside the gallery (<lab>/mistakes/*.mistake)");
-            checkMistakes = true;
-        } else if (option == "--write-heatmap-legend") {
-            options.heatMapLegend = takeValue("a PNG file to write");
-        } else if (option == "--help" || option == "-h") {
-            noValue();
-            help = true;
-        } else if (option.rfind("-", 0) == 0) {
-            throw UsageError("unknown option '" + option + "'; the options are " + kOptionList);
-        } else {
-            throw UsageError("unexpected argument '" + option + "' (did you mean --lab " + option +
-                             " or --case " + option + "?)");
-        }
-    }
+const std::vector<OptionSpec>& optionTable() {
+    static const std::vector<OptionSpec> table = {
+        {"--lab", "a lab, such as 01_transforms or 01",
+         [](Options& o, ModeFlags&, const std::string& v) { o.labs.push_back(v); }},
+        {"--case", "a case name, such as orbit_front",
+         [](Options& o, ModeFlags&, const std::string& v) { o.cases.push_back(v); }},
+        {"--bin-dir", "a folder with the lab programs, such as build/bin",
+         [](Options& o, ModeFlags&, const std::string& v) { o.binDir = v; }},
+        {"--backend", "osmesa or egl",
+         [](Options& o, ModeFlags&, const std::string& v) {
+             if (v != "osmesa" && v != "egl") throw UsageError("--backend must be osmesa or egl, got '" + v + "'");
+             o.backend = v;
+         }},
+        {"--json", "a file to write, such as results.json",
+         [](Options& o, ModeFlags&, const std::string& v) { o.jsonFile = v; }},
+        {"--html", "a file to write, such as report.html",
+         [](Options& o, ModeFlags&, const std::string& v) { o.htmlFile = v; }},
+        {"--junit", "a file to write, such as junit.xml",
+         [](Options& o, ModeFlags&, const std::string& v) { o.junitFile = v; }},
+        {"--timeout", "a number of seconds",
+         [](Options& o, ModeFlags&, const std::string& v) { o.timeoutSeconds = parsePositiveNumber("--timeout", v); }},
+        {"--jobs", "a number of cases to render at once",
+         [](Options& o, ModeFlags&, const std::string& v) { o.jobs = parseJobCount(v); }},
+        {"--work-dir", "a folder for the rendered images",
+         [](Options& o, ModeFlags&, const std::string& v) { o.workDir = v; }},
+        {"--shader-cache", "a folder for Mesa's shader cache",
+         [](Options& o, ModeFlags&, const std::string& v) { o.shaderCache = v; }},
+        {"--private", "a folder the lab programs may not see",
+         [](Options& o, ModeFlags&, const std::string& v) { o.privateDirs.push_back(v); }},
+        {"--expect", "pass or not-attempted",
+         [](Options& o, ModeFlags&, const std::string& v) {
+             if (v == "pass") o.expect = GradeStatus::Passed;
+             else if (v == "not-attempted") o.expect = GradeStatus::NotAttempted;
+             else throw UsageError("--expect must be pass or not-attempted, got '" + v + "'");
+         }},
+        {"--update-references", nullptr, [](Options&, ModeFlags& m, const std::string&) { m.updateReferences = true; }},
+        {"--check-mistakes", nullptr, [](Options&, ModeFlags& m, const std::string&) { m.checkMistakes = true; }},
+        {"--check-hints", "a folder of mistakes outside the gallery (<lab>/mistakes/*.mistake)",
+         [](Options& o, ModeFlags& m, const std::string& v) {
+             o.outOfGalleryDir = v;
+             m.checkMistakes = true;
+         }},
+        {"--determinism", nullptr, [](Options&, ModeFlags& m, const std::string&) { m.determinism = true; }},
+        {"--write-heatmap-legend", "a PNG file to write",
+         [](Options& o, ModeFlags&, const std::string& v) { o.heatMapLegend = v; }},
+        {"--help", nullptr, [](Options&, ModeFlags& m, const std::string&) { m.help = true; }},
+    };
+    return table;
+}
 
-    if (help) {
+// "--lab, --case, ..., --help": every option, for the message about an unknown one.
+std::string optionList() {
+    std::string list;
+    for (const OptionSpec& spec : optionTable()) list += (list.empty() ? "" : ", ") + std::string(spec.name);
+    return list;
+}
+
+const OptionSpec& findOption(const std::string& option) {
+    const std::string name = option == "-h" ? "--help" : option;
+    for (const OptionSpec& spec : optionTable())
+        if (name == spec.name) return spec;
+    if (option.rfind("-", 0) == 0)
+        throw UsageError("unknown option '" + option + "'; the options are " + optionList());
+    throw UsageError("unexpected argument '" + option + "' (did you mean --lab " + option + " or --case " + option + "?)");
+}
+
+// The mode the flags ask for, and the options that do not go with it.
+void chooseMode(Options& options, const ModeFlags& modes) {
+    if (modes.help) {
         options.mode = Mode::Help;
-        return options;
+        return;
     }
-    if (updateReferences && checkMistakes)
+    if (modes.updateReferences && modes.checkMistakes)
         throw UsageError("--update-references and --check-mistakes cannot be combined; run them one after the other");
-    if (updateReferences) options.mode = Mode::UpdateReferences;
-    if (checkMistakes) options.mode = Mode::CheckMistakes;
-    if (determinism && (updateReferences || checkMistakes))
+    if (modes.updateReferences) options.mode = Mode::UpdateReferences;
+    if (modes.checkMistakes) options.mode = Mode::CheckMistakes;
+    if (modes.determinism && (modes.updateReferences || modes.checkMistakes))
         throw UsageError("--determinism cannot be combined with --update-references or --check-mistakes");
-    if (determinism) options.mode = Mode::Determinism;
+    if (modes.determinism) options.mode = Mode::Determinism;
     if (!options.heatMapLegend.empty()) {
-        if (updateReferences || checkMistakes || determinism)
+        if (modes.updateReferences || modes.checkMistakes || modes.determinism)
             throw UsageError("--write-heatmap-legend cannot be combined with another mode");
         options.mode = Mode::HeatMapLegend;
     }
     if (options.mode != Mode::Grade) {
-        const char* modeName = updateReferences                   ? "--update-references"
-                               : !options.outOfGalleryDir.empty() ? "--check-hints"
-                               : checkMistakes                    ? "--check-mistakes"
-                               : determinism                      ? "--determinism"
-                                                                  : "--write-heatmap-legend";
-        if (options.expect) throw UsageError(std::string("--expect only applies to grading, not to ") + modeName);
-        if (!options.jsonFile.empty())
-            throw UsageError(std::string("--json only applies to grading, not to ") + modeName);
-        if (!options.htmlFile.empty())
-            throw UsageError(std::string("--html only applies to grading, not to ") + modeName);
-        if (!options.junitFile.empty())
-            throw UsageError(std::string("--junit only applies to grading, not to ") + modeName);
+        const std::string modeName = modes.updateReferences          ? "--update-references"
+                                     : !options.outOfGalleryDir.empty() ? "--check-hints"
+                                     : modes.checkMistakes            ? "--check-mistakes"
+                                     : modes.determinism              ? "--determinism"
+                                                                      : "--write-heatmap-legend";
+        const std::pair<bool, const char*> gradingOnly[] = {{options.expect.has_value(), "--expect"},
+                                                            {!options.jsonFile.empty(), "--json"},
+                                                            {!options.htmlFile.empty(), "--html"},
+                                                            {!options.junitFile.empty(), "--junit"}};
+        for (const auto& [given, name] : gradingOnly)
+            if (given) throw UsageError(std::string(name) + " only applies to grading, not to " + modeName);
     }
-    if (checkMistakes && !options.cases.empty())
+    if (modes.checkMistakes && !options.cases.empty())
         throw UsageError("--check-mistakes checks the cases each mistake names in 'fails:'; drop --case");
+}
+
+} // namespace
+
+Options parseCommandLine(const std::vector<std::string>& arguments) {
+    Options options;
+    ModeFlags modes;
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+        std::string option = arguments[i];
+        std::optional<std::string> inlineValue;   // --json=FILE
+        const std::size_t equals = option.find('=');
+        if (option.rfind("--", 0) == 0 && equals != std::string::npos) {
+            inlineValue = option.substr(equals + 1);
+            option = option.substr(0, equals);
+        }
+        const OptionSpec& spec = findOption(option);
+        std::string value;
+        if (!spec.value) {
+            if (inlineValue) throw UsageError(option + " takes no value");
+        } else if (inlineValue) {
+            if (inlineValue->empty()) throw UsageError(option + " needs " + spec.value + " after '='");
+            value = *inlineValue;
+        } else {
+            if (i + 1 >= arguments.size() || arguments[i + 1].rfind("--", 0) == 0)
+                throw UsageError(option + " needs " + spec.value);
+            value = arguments[++i];
+        }
+        spec.apply(options, modes, value);
+    }
+    chooseMode(options, modes);
     return options;
 }
 

@@ -2,6 +2,7 @@
 
 #include "Cascade.hpp"
 #include "Grader.hpp"
+#include "GradingRun.hpp"
 #include "Hints.hpp"
 #include "HtmlReport.hpp"
 #include "ProcessContainment.hpp"
@@ -12,7 +13,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iterator>
 #include <map>
+#include <ostream>
 #include <sstream>
 
 namespace stoa::grader {
@@ -44,89 +47,71 @@ std::vector<std::string> unmetExpectations(const std::vector<GradeResult>& resul
     return lines;
 }
 
-int runGrade(const Options& options, const Environment& env) {
-    auto start = std::chrono::steady_clock::now();
-    std::vector<PlannedLab> labs = planLabs(options, env, true);
-    if (labs.empty()) {
-        env.err << "stoa-grade: no lab program to run in " << env.binDir.string()
-                << ": build the labs first (cmake --build build) or point --bin-dir at them\n";
-        return 1;
-    }
+namespace {
 
-    std::filesystem::path workDir = makeWorkDir(options.workDir);
-    // Once, where the system cannot contain the lab programs as the guide says.
-    for (const std::string& note : std::vector<std::string>{networkIsolationNote(), fileConfinementNote()})
-        if (!note.empty()) env.err << note << std::endl;
-    std::vector<CaseJob> jobs;
-    std::map<std::string, std::vector<CaseJob>> cascadeJobs;
+// The cases of the selected labs, and those of their cascade runs (Cascade.hpp).
+struct GradePlan {
+    std::vector<CaseOutcome> own;
+    std::vector<CaseOutcome> cascades;
+};
+
+GradePlan planGrade(const std::vector<PlannedLab>& labs, const Environment& env, const std::filesystem::path& workDir) {
+    GradePlan plan;
     for (const PlannedLab& lab : labs) {
-        std::vector<CaseJob> labJobs = caseJobs(lab, lab.program, env.sourceDir, workDir);
-        jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
-        if (!lab.cascadeProgram.empty())
-            cascadeJobs[lab.lab] = caseJobs(lab, lab.cascadeProgram, env.sourceDir, workDir, true);
+        for (CaseOutcome& outcome : plannedOutcomes(caseJobs(lab, lab.program, env.sourceDir, workDir)))
+            plan.own.push_back(std::move(outcome));
+        if (lab.cascadeProgram.empty()) continue;
+        for (CaseOutcome& outcome : plannedOutcomes(caseJobs(lab, lab.cascadeProgram, env.sourceDir, workDir, true)))
+            plan.cascades.push_back(std::move(outcome));
     }
+    return plan;
+}
 
-    // Read before any lab program runs, for the cascade runs too.
-    std::vector<CaseJob> everyJob = jobs;
-    for (const auto& [lab, labJobs] : cascadeJobs) everyJob.insert(everyJob.end(), labJobs.begin(), labJobs.end());
-    HintGallery gallery = HintGallery::load(everyJob);
-
-    auto printProgress = [&](std::size_t, const GradeResult& result, std::size_t done, std::size_t total) {
-        env.err << progressLine(result, done, total) << std::endl;
-    };
-    std::vector<GradeResult> results = gradeCases(jobs, runSettings(options, env.sourceDir, workDir), options.jobs, printProgress);
-
-    // The cascade runs (Cascade.hpp), for the labs whose own run lost points: one
-    // with full marks already counts, as it would on a tie.
-    std::vector<CaseJob> cascadeRun;
+// The cascade runs worth running: those of the labs whose own run lost points
+// (one with full marks already counts, as it would on a tie).
+std::vector<CaseOutcome> cascadesNeeded(const std::vector<CaseOutcome>& own, std::vector<CaseOutcome> cascades,
+                                        std::ostream& err) {
+    std::map<std::string, std::pair<double, double>> points;   // lab -> earned, possible
+    for (const CaseOutcome& outcome : own) {
+        points[outcome.job.lab].first += outcome.result.points;
+        points[outcome.job.lab].second += outcome.result.maxPoints;
+    }
     std::vector<std::string> fullMarks;
-    for (const auto& [lab, labJobs] : cascadeJobs) {
-        double points = 0.0, maxPoints = 0.0;
-        for (const GradeResult& result : results)
-            if (result.lab == lab) {
-                points += result.points;
-                maxPoints += result.maxPoints;
-            }
-        if (points >= maxPoints)
-            fullMarks.push_back(lab);
-        else
-            cascadeRun.insert(cascadeRun.end(), labJobs.begin(), labJobs.end());
+    std::vector<CaseOutcome> needed;
+    for (CaseOutcome& outcome : cascades) {
+        const auto [earned, possible] = points[outcome.job.lab];
+        if (earned < possible) {
+            needed.push_back(std::move(outcome));
+        } else if (std::find(fullMarks.begin(), fullMarks.end(), outcome.job.lab) == fullMarks.end()) {
+            fullMarks.push_back(outcome.job.lab);
+        }
     }
     if (!fullMarks.empty()) {
-        env.err << "cascade runs not needed (full marks on their own):";
-        for (const std::string& lab : fullMarks) env.err << " " << lab;
-        env.err << std::endl;
+        err << "cascade runs not needed (full marks on their own):";
+        for (const std::string& lab : fullMarks) err << " " << lab;
+        err << std::endl;
     }
-    if (!cascadeRun.empty()) {
-        env.err << "cascade runs (the lab with the earlier labs' solutions):" << std::endl;
-        std::vector<GradeResult> cascadeResults =
-            gradeCases(cascadeRun, runSettings(options, env.sourceDir, workDir), options.jobs, printProgress);
-        // Each lab's cascade run right after its own, as the reports list them.
-        std::vector<CaseJob> orderedJobs;
-        std::vector<GradeResult> orderedResults;
-        for (const PlannedLab& lab : labs)
-            for (const auto* run : {&jobs, &cascadeRun})
-                for (std::size_t i = 0; i < run->size(); ++i)
-                    if ((*run)[i].lab == lab.lab) {
-                        orderedJobs.push_back((*run)[i]);
-                        orderedResults.push_back(run == &jobs ? results[i] : cascadeResults[i]);
-                    }
-        jobs = std::move(orderedJobs);
-        results = std::move(orderedResults);
-    }
-    addHints(results, jobs, gallery, options.jobs);
-    applyCascadePolicy(results);
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!needed.empty()) err << "cascade runs (the lab with the earlier labs' solutions):" << std::endl;
+    return needed;
+}
 
-    // Each case's leftovers were killed as it ended; this is the last look before
-    // any report is written: nothing a lab program started may be running then.
-    if (std::size_t strays = killStrayProcesses())
-        env.err << "stoa-grade: killed " << strays << " more processes the lab programs had left running\n";
+// Each lab's own cases, then its cascade run's, in the order the labs were planned.
+std::vector<CaseOutcome> inReportOrder(const std::vector<PlannedLab>& labs, std::vector<CaseOutcome> own,
+                                       std::vector<CaseOutcome> cascaded) {
+    std::map<std::string, std::size_t> rank;
+    for (const PlannedLab& lab : labs) rank.emplace(lab.lab, rank.size());
+    own.insert(own.end(), std::make_move_iterator(cascaded.begin()), std::make_move_iterator(cascaded.end()));
+    std::stable_sort(own.begin(), own.end(), [&](const CaseOutcome& a, const CaseOutcome& b) {
+        return rank[a.job.lab] < rank[b.job.lab];
+    });
+    return own;
+}
 
+void writeReports(const Options& options, const Environment& env, const std::vector<GradeResult>& results,
+                  double seconds) {
     Totals totals = summarize(results);
     env.out << "\n";
     printReport(env.out, results, totals);   // a lab where nothing was attempted says where to start
-
     if (!options.jsonFile.empty()) {
         writeResultsJson(options.jsonFile, results, totals, seconds, summaryText(totals));
         env.out << "wrote " << options.jsonFile.string() << "\n";
@@ -142,18 +127,45 @@ int runGrade(const Options& options, const Environment& env) {
         writeJunitXml(options.junitFile, results);
         env.out << "wrote " << options.junitFile.string() << "\n";
     }
+}
 
-    // The folder is named only when it holds a picture (after a compile error it holds none).
+// Keep the work folder when it holds a picture worth a look: a failed or broken
+// case's, or any when --work-dir named it (after a compile error it holds none).
+bool imagesWorthKeeping(const Options& options, const std::vector<GradeResult>& results) {
     bool rendered = std::any_of(results.begin(), results.end(), [](const GradeResult& result) {
         return !result.renderedImage.empty() || !result.heatMapImage.empty();
     });
-    bool keep = !options.workDir.empty() || std::any_of(results.begin(), results.end(), worthKeeping);
-    if (keep && rendered) {
-        env.out << "rendered images and heat maps: " << workDir.string() << "\n";
-    } else if (options.workDir.empty()) {
-        std::error_code ignored;
-        std::filesystem::remove_all(workDir, ignored);
-    }
+    return rendered && (!options.workDir.empty() || std::any_of(results.begin(), results.end(), worthKeeping));
+}
+
+} // namespace
+
+int runGrade(const Options& options, const Environment& env) {
+    auto start = std::chrono::steady_clock::now();
+    std::vector<PlannedLab> labs = planLabs(options, env, true);
+    if (noProgramToRun(labs, env, "build the labs first (cmake --build build) or point --bin-dir at them")) return 1;
+    GradingRun run(options, env);
+    // Once, where the system cannot contain the lab programs as the guide says.
+    for (const std::string& note : std::vector<std::string>{networkIsolationNote(), fileConfinementNote()})
+        if (!note.empty()) env.err << note << std::endl;
+
+    GradePlan plan = planGrade(labs, env, run.workDir());
+    run.readGallery(plan.cascades);   // before any lab program runs
+    std::vector<CaseOutcome> own = run.grade(std::move(plan.own));
+    std::vector<CaseOutcome> cascaded = run.grade(cascadesNeeded(own, std::move(plan.cascades), env.err));
+    std::vector<CaseOutcome> outcomes = inReportOrder(labs, std::move(own), std::move(cascaded));
+    run.addHints(outcomes);
+    std::vector<GradeResult> results = resultsOf(outcomes);
+    applyCascadePolicy(results);
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    // Each case's leftovers were killed as it ended; this is the last look before
+    // any report is written: nothing a lab program started may be running then.
+    if (std::size_t strays = killStrayProcesses())
+        env.err << "stoa-grade: killed " << strays << " more processes the lab programs had left running\n";
+
+    writeReports(options, env, results, seconds);
+    run.finish(imagesWorthKeeping(options, results));
 
     if (options.expect) {
         std::vector<std::string> unmet = unmetExpectations(results, *options.expect);

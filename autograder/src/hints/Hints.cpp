@@ -143,10 +143,16 @@ std::string docsPath(const std::string& docs) {
 
 HintGallery HintGallery::load(const std::vector<CaseJob>& jobs) {
     HintGallery gallery;
-    gallery.m_images.resize(jobs.size());
+    gallery.add(jobs);
+    return gallery;
+}
+
+void HintGallery::add(const std::vector<CaseJob>& jobs) {
     std::map<std::filesystem::path, std::vector<KnownMistake>> mistakesByFolder;
-    for (std::size_t i = 0; i < jobs.size(); ++i) {
-        std::filesystem::path referenceDir = jobs[i].reference.parent_path();
+    for (const CaseJob& job : jobs) {
+        if (m_images.count(job.reference)) continue;
+        std::vector<GalleryImage>& images = m_images[job.reference];
+        std::filesystem::path referenceDir = job.reference.parent_path();
         auto found = mistakesByFolder.find(referenceDir);
         if (found == mistakesByFolder.end()) {
             std::vector<KnownMistake> mistakes;
@@ -158,96 +164,119 @@ HintGallery HintGallery::load(const std::vector<CaseJob>& jobs) {
             found = mistakesByFolder.emplace(referenceDir, std::move(mistakes)).first;
         }
         for (const KnownMistake& mistake : found->second) {
-            std::filesystem::path path = mistake.imageFor(jobs[i].spec.name);
+            std::filesystem::path path = mistake.imageFor(job.spec.name);
             std::error_code error;
             if (!std::filesystem::is_regular_file(path, error)) continue;
             try {
-                gallery.m_images[i].push_back(GalleryImage{mistake, Image::load(path)});
+                images.push_back(GalleryImage{mistake, Image::load(path)});
             } catch (const std::exception&) {
                 // An image that does not decode gives no hint.
             }
         }
     }
-    return gallery;
 }
 
-const std::vector<GalleryImage>& HintGallery::imagesFor(std::size_t jobIndex) const {
-    return jobIndex < m_images.size() ? m_images[jobIndex] : kNoImages;
+const std::vector<GalleryImage>& HintGallery::imagesFor(const CaseJob& job) const {
+    auto found = m_images.find(job.reference);
+    return found == m_images.end() ? kNoImages : found->second;
 }
 
 std::size_t HintGallery::imageCount() const {
     std::size_t count = 0;
-    for (const std::vector<GalleryImage>& images : m_images) count += images.size();
+    for (const auto& [reference, images] : m_images) count += images.size();
     return count;
 }
 
-void addHints(std::vector<GradeResult>& results, const std::vector<CaseJob>& jobs, const HintGallery& gallery,
-              int parallelJobs) {
-    std::size_t count = std::min(results.size(), jobs.size());
-    for (std::size_t i = 0; i < count; ++i) clearHint(results[i]);
+namespace {
 
-    // Rule (b) first, per program: the mistakes its statuses rule out need no picture compared.
+using RuledOut = std::map<std::filesystem::path, std::vector<std::string>>;   // program -> mistake names
+
+bool isRuledOut(const RuledOut& ruledOut, const std::filesystem::path& program, const std::string& mistake) {
+    auto found = ruledOut.find(program);
+    return found != ruledOut.end() && std::find(found->second.begin(), found->second.end(), mistake) != found->second.end();
+}
+
+// Rule (b), per program: the mistakes its statuses rule out need no picture compared.
+RuledOut ruledOutByPattern(const std::vector<CaseOutcome>& outcomes, const HintGallery& gallery) {
     std::map<std::filesystem::path, std::vector<std::pair<std::string, GradeStatus>>> statuses;
-    for (std::size_t i = 0; i < count; ++i)
-        statuses[jobs[i].program].emplace_back(results[i].caseName, results[i].status);
-    std::map<std::filesystem::path, std::vector<std::string>> ruledOut;   // program -> mistake names
-    for (std::size_t i = 0; i < count; ++i)
-        for (const GalleryImage& image : gallery.imagesFor(i)) {
-            std::vector<std::string>& out = ruledOut[jobs[i].program];
+    for (const CaseOutcome& outcome : outcomes)
+        statuses[outcome.job.program].emplace_back(outcome.result.caseName, outcome.result.status);
+    RuledOut ruledOut;
+    for (const CaseOutcome& outcome : outcomes) {
+        std::vector<std::string>& out = ruledOut[outcome.job.program];
+        for (const GalleryImage& image : gallery.imagesFor(outcome.job))
             if (std::find(out.begin(), out.end(), image.mistake.name) == out.end() &&
-                !patternAgrees(image.mistake.fails, statuses[jobs[i].program]))
+                !patternAgrees(image.mistake.fails, statuses[outcome.job.program]))
                 out.push_back(image.mistake.name);
-        }
-
-    // Rule (a): the pictures of every failed case against its gallery images.
-    std::vector<CaseDistances> distances(count);
-    std::vector<std::size_t> failed;
-    for (std::size_t i = 0; i < count; ++i)
-        if (results[i].status == GradeStatus::Failed && !gallery.imagesFor(i).empty()) failed.push_back(i);
-    for (std::size_t i : failed) ruledOut[jobs[i].program];   // no insertion below, from several threads
-    forEachInParallel(failed.size(), parallelJobs, [&](std::size_t k) {
-        std::size_t i = failed[k];
-        try {
-            distances[i] = measure(results[i], jobs[i], gallery.imagesFor(i), ruledOut.at(jobs[i].program));
-        } catch (const std::exception&) {
-            distances[i] = CaseDistances{};   // an image that does not read: this case says nothing
-        }
-    });
-    // A mistake whose picture is not clearly closer on one of its failed cases is out for the whole program.
-    for (std::size_t i : failed) {
-        if (!distances[i].measured) continue;
-        const std::vector<GalleryImage>& images = gallery.imagesFor(i);
-        for (std::size_t k = 0; k < images.size(); ++k) {
-            std::vector<std::string>& out = ruledOut[jobs[i].program];
-            if (std::find(out.begin(), out.end(), images[k].mistake.name) != out.end()) continue;
-            if (!clearlyCloser(distances[i].toMistake[k], distances[i].toReference))
-                out.push_back(images[k].mistake.name);
-        }
     }
+    return ruledOut;
+}
 
+// Rule (a): a mistake whose picture is not clearly closer on one of the
+// program's failed cases is out for the whole program.
+void ruleOutByPicture(const std::vector<CaseOutcome>& outcomes, const std::vector<std::size_t>& failed,
+                      const std::vector<CaseDistances>& distances, const HintGallery& gallery, RuledOut& ruledOut) {
     for (std::size_t i : failed) {
         if (!distances[i].measured) continue;
-        const std::vector<GalleryImage>& images = gallery.imagesFor(i);
-        const std::vector<std::string>& out = ruledOut[jobs[i].program];
-        std::optional<std::size_t> best;
-        for (std::size_t k = 0; k < images.size(); ++k) {
-            if (std::find(out.begin(), out.end(), images[k].mistake.name) != out.end()) continue;
-            if (!best || ratio(distances[i].toMistake[k], distances[i].toReference) <
-                             ratio(distances[i].toMistake[*best], distances[i].toReference))
-                best = k;
-        }
-        if (!best) continue;
-        const KnownMistake& mistake = images[*best].mistake;
-        results[i].hint = mistake.hint;
-        results[i].hintDocs = docsPath(mistake.docs);
-        results[i].hintMistake = mistake.name;
-        results[i].hintImage = mistake.imageFor(jobs[i].spec.name);
-        results[i].hintDistance = distances[i].toMistake[*best].flipMean;
+        const std::vector<GalleryImage>& images = gallery.imagesFor(outcomes[i].job);
+        std::vector<std::string>& out = ruledOut[outcomes[i].job.program];
+        for (std::size_t k = 0; k < images.size(); ++k)
+            if (std::find(out.begin(), out.end(), images[k].mistake.name) == out.end() &&
+                !clearlyCloser(distances[i].toMistake[k], distances[i].toReference))
+                out.push_back(images[k].mistake.name);
     }
 }
 
-void addHints(std::vector<GradeResult>& results, const std::vector<CaseJob>& jobs, int parallelJobs) {
-    addHints(results, jobs, HintGallery::load(jobs), parallelJobs);
+// The closest mistake left for a failed case, as its hint.
+void hintClosest(CaseOutcome& outcome, const CaseDistances& distances, const std::vector<GalleryImage>& images,
+                 const RuledOut& ruledOut) {
+    std::optional<std::size_t> best;
+    for (std::size_t k = 0; k < images.size(); ++k) {
+        if (isRuledOut(ruledOut, outcome.job.program, images[k].mistake.name)) continue;
+        if (!best || ratio(distances.toMistake[k], distances.toReference) <
+                         ratio(distances.toMistake[*best], distances.toReference))
+            best = k;
+    }
+    if (!best) return;
+    const KnownMistake& mistake = images[*best].mistake;
+    GradeResult& result = outcome.result;
+    result.hint = mistake.hint;
+    result.hintDocs = docsPath(mistake.docs);
+    result.hintMistake = mistake.name;
+    result.hintImage = mistake.imageFor(outcome.job.spec.name);
+    result.hintDistance = distances.toMistake[*best].flipMean;
+}
+
+} // namespace
+
+void addHints(std::vector<CaseOutcome>& outcomes, const HintGallery& gallery, int parallelJobs) {
+    for (CaseOutcome& outcome : outcomes) clearHint(outcome.result);
+    RuledOut ruledOut = ruledOutByPattern(outcomes, gallery);
+
+    // The pictures of every failed case against its gallery images.
+    std::vector<CaseDistances> distances(outcomes.size());
+    std::vector<std::size_t> failed;
+    for (std::size_t i = 0; i < outcomes.size(); ++i)
+        if (outcomes[i].result.status == GradeStatus::Failed && !gallery.imagesFor(outcomes[i].job).empty())
+            failed.push_back(i);
+    forEachInParallel(failed.size(), parallelJobs, [&](std::size_t k) {
+        const CaseOutcome& outcome = outcomes[failed[k]];
+        try {
+            distances[failed[k]] = measure(outcome.result, outcome.job, gallery.imagesFor(outcome.job),
+                                           ruledOut.at(outcome.job.program));
+        } catch (const std::exception&) {
+            distances[failed[k]] = CaseDistances{};   // an image that does not read: this case says nothing
+        }
+    });
+    ruleOutByPicture(outcomes, failed, distances, gallery, ruledOut);
+    for (std::size_t i : failed)
+        if (distances[i].measured) hintClosest(outcomes[i], distances[i], gallery.imagesFor(outcomes[i].job), ruledOut);
+}
+
+void addHints(std::vector<CaseOutcome>& outcomes, int parallelJobs) {
+    std::vector<CaseJob> jobs;
+    for (const CaseOutcome& outcome : outcomes) jobs.push_back(outcome.job);
+    addHints(outcomes, HintGallery::load(jobs), parallelJobs);
 }
 
 } // namespace stoa::grader

@@ -33,6 +33,7 @@
 // It ships with the student release (it holds no solution code), so hints work
 // where solutions/ is absent.
 
+#include "CaseOutcome.hpp"
 #include "CaseRunner.hpp"
 #include "GradeResult.hpp"
 #include "MistakeFile.hpp"
@@ -41,6 +42,7 @@
 #include <stoa/image/ImageCompare.hpp>
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -97,21 +99,24 @@ struct GalleryImage {
 };
 
 /// The gallery images of every case of a run, read before any lab program runs,
-/// so that no program can change or remove what its hints are chosen from.
+/// so that no program can change or remove what its hints are chosen from. Kept
+/// once per reference picture: a lab's own run and its cascade run share them.
 class HintGallery {
 public:
     /// Reads the gallery images of each job's case (from the gallery next to the
     /// job's reference). Never throws: a gallery whose info file does not parse,
     /// or an image that does not decode, gives no hints.
     static HintGallery load(const std::vector<CaseJob>& jobs);
+    /// Reads those of `jobs` whose reference it has not read yet.
+    void add(const std::vector<CaseJob>& jobs);
 
-    /// The images for `jobs[jobIndex]` of load() (none for an index beyond them).
-    const std::vector<GalleryImage>& imagesFor(std::size_t jobIndex) const;
+    /// The images for `job`'s case (none for a reference it has not read).
+    const std::vector<GalleryImage>& imagesFor(const CaseJob& job) const;
     /// How many images it holds in all.
     std::size_t imageCount() const;
 
 private:
-    std::vector<std::vector<GalleryImage>> m_images;
+    std::map<std::filesystem::path, std::vector<GalleryImage>> m_images;   // by the job's reference
 };
 
 /// The index in `gallery` of the mistake `rendered` is closest to, when that
@@ -128,15 +133,14 @@ std::optional<std::size_t> closestMistake(const Image& rendered, const Image& re
 std::string docsPath(const std::string& docs);
 
 /// Sets hint, hintDocs, hintMistake, hintImage and hintDistance on every failed
-/// result that meets rules (a) and (b) above for a gallery mistake. `jobs[i]` is
-/// the job that produced `results[i]`; results of the same program are judged
-/// together (rule (b)), and `gallery` was loaded from `jobs` (before grading).
-/// The reference distance is the one grading measured; the reference is read
-/// only when a result lacks it. Never throws. Works on `parallelJobs` cases at once.
-void addHints(std::vector<GradeResult>& results, const std::vector<CaseJob>& jobs, const HintGallery& gallery,
-              int parallelJobs = 1);
+/// result that meets rules (a) and (b) above for a gallery mistake. The results
+/// of the same program are judged together (rule (b)); `gallery` was loaded from
+/// the outcomes' jobs before grading. The reference distance is the one grading
+/// measured; the reference is read only when a result lacks it. Never throws.
+/// Works on `parallelJobs` cases at once.
+void addHints(std::vector<CaseOutcome>& outcomes, const HintGallery& gallery, int parallelJobs = 1);
 
 /// The same with the gallery read now.
-void addHints(std::vector<GradeResult>& results, const std::vector<CaseJob>& jobs, int parallelJobs = 1);
+void addHints(std::vector<CaseOutcome>& outcomes, int parallelJobs = 1);
 
 } // namespace stoa::grader

@@ -1,9 +1,11 @@
 #include "DeterminismCheck.hpp"
 
 #include "Grader.hpp"
+#include "GradingRun.hpp"
 
 #include <algorithm>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 
 namespace stoa::grader {
@@ -44,115 +46,90 @@ std::vector<DeterminismVariant> determinismVariants() {
 
 namespace {
 
-struct CaseCheck {
-    std::string name;                       // "01_transforms/orbit_front"
-    std::vector<RenderOutcome> renders;     // one per variant
+enum class Verdict { Identical, Differs, Failed, Skipped };
+
+struct CaseVerdict {
+    Verdict verdict;
+    std::string line;   // what the report says after the case's name
 };
+
+// A property check draws nothing: its verdict must be the same in every run.
+CaseVerdict judgeCheck(const std::vector<CaseOutcome>& renders) {
+    const RenderOutcome& first = renders[0].render;
+    const bool same = std::all_of(renders.begin(), renders.end(), [&](const CaseOutcome& run) {
+        return run.render.status == first.status && run.render.reason == first.reason;
+    });
+    if (first.status == GradeStatus::NotAttempted) return {Verdict::Skipped, "skipped, not attempted (" + first.reason + ")"};
+    if (first.status != GradeStatus::Passed && first.status != GradeStatus::Failed)
+        return {Verdict::Failed, "FAILED to run the check: " + first.reason};
+    if (same)
+        return {Verdict::Identical, "the same verdict in " + std::to_string(renders.size()) + " runs (a property check)"};
+    return {Verdict::Differs, "DIFFERS: the property check's verdict changes between runs"};
+}
+
+// The renders of one case, each against the first, bit for bit.
+CaseVerdict judgeRenders(const std::vector<CaseOutcome>& renders) {
+    for (const CaseOutcome& run : renders) {
+        if (run.render.rendered) continue;
+        if (run.render.status == GradeStatus::NotAttempted)
+            return {Verdict::Skipped, "skipped, not attempted (" + run.render.reason + ")"};
+        return {Verdict::Failed, "FAILED to render (" + run.label + "): " + run.render.reason};
+    }
+    std::string differences;
+    for (std::size_t v = 1; v < renders.size(); ++v) {
+        ImageDifference difference = compareExactly(renders[0].render.image, renders[v].render.image);
+        if (!difference.identical())
+            differences += "\n    " + renders[v].label + " vs " + renders[0].label + ": " + difference.describe();
+    }
+    if (differences.empty()) return {Verdict::Identical, "identical in " + std::to_string(renders.size()) + " renders"};
+    return {Verdict::Differs, "DIFFERS" + differences};
+}
+
+// Every (case, variant) pair, each rendering into its own folder; a case's
+// variants are consecutive, in the order of `variants`.
+std::vector<CaseOutcome> planVariants(const std::vector<PlannedLab>& labs, const Environment& env,
+                                      const std::filesystem::path& workDir,
+                                      const std::vector<DeterminismVariant>& variants) {
+    std::vector<CaseOutcome> planned;
+    for (const PlannedLab& lab : labs)
+        for (const CaseJob& job : caseJobs(lab, lab.program, env.sourceDir, workDir))
+            for (std::size_t v = 0; v < variants.size(); ++v) {
+                CaseJob variant = job;
+                variant.workDir = job.workDir / ("variant-" + std::to_string(v));
+                variant.environment = variants[v].environment;
+                for (CaseOutcome& outcome : plannedOutcomes({variant}, variants[v].name))
+                    planned.push_back(std::move(outcome));
+            }
+    return planned;
+}
 
 } // namespace
 
 int runDeterminismCheck(const Options& options, const Environment& env) {
     std::vector<PlannedLab> labs = planLabs(options, env, true);
-    if (labs.empty()) {
-        env.err << "stoa-grade: no lab program to run in " << env.binDir.string()
-                << ": build the labs first (cmake --build build) or point --bin-dir at them\n";
-        return 1;
-    }
-    std::filesystem::path workDir = makeWorkDir(options.workDir);
-    std::vector<DeterminismVariant> variants = determinismVariants();
+    if (noProgramToRun(labs, env, "build the labs first (cmake --build build) or point --bin-dir at them")) return 1;
+    GradingRun run(options, env);
+    const std::vector<DeterminismVariant> variants = determinismVariants();
+    const std::vector<CaseOutcome> renders = run.render(planVariants(labs, env, run.workDir(), variants));
 
-    // Every (case, variant) pair is a job; each renders into its own folder.
-    std::vector<CaseJob> cases;
-    for (const PlannedLab& lab : labs) {
-        std::vector<CaseJob> labJobs = caseJobs(lab, lab.program, env.sourceDir, workDir);
-        cases.insert(cases.end(), labJobs.begin(), labJobs.end());
-    }
-    std::vector<CaseCheck> checks(cases.size());
-    for (std::size_t i = 0; i < cases.size(); ++i) {
-        checks[i].name = cases[i].lab + "/" + cases[i].spec.name;
-        checks[i].renders.resize(variants.size());
-    }
-    RunSettings base = runSettings(options, env.sourceDir, workDir);
-    std::size_t total = cases.size() * variants.size();
-    forEachInParallel(total, options.jobs, [&](std::size_t index) {
-        std::size_t caseIndex = index / variants.size();
-        std::size_t variantIndex = index % variants.size();
-        CaseJob job = cases[caseIndex];
-        job.workDir = job.workDir / ("variant-" + std::to_string(variantIndex));
-        RunSettings settings = base;
-        for (const std::string& assignment : variants[variantIndex].environment)
-            settings.limits.environment.push_back(assignment);
-        checks[caseIndex].renders[variantIndex] = renderCase(job, settings);
-    });
-
-    int differing = 0, failed = 0, skipped = 0, identical = 0;
-    for (std::size_t caseIndex = 0; caseIndex < checks.size(); ++caseIndex) {
-        const CaseCheck& check = checks[caseIndex];
-        const RenderOutcome& first = check.renders[0];
-        if (!cases[caseIndex].spec.check.empty()) {
-            // A property check draws nothing: its verdict must be the same in every run.
-            const bool same = std::all_of(check.renders.begin(), check.renders.end(), [&](const RenderOutcome& run) {
-                return run.status == first.status && run.reason == first.reason;
-            });
-            if (first.status == GradeStatus::NotAttempted) {
-                ++skipped;
-                env.out << check.name << ": skipped, not attempted (" << first.reason << ")\n";
-            } else if (first.status != GradeStatus::Passed && first.status != GradeStatus::Failed) {
-                ++failed;
-                env.out << check.name << ": FAILED to run the check: " << first.reason << "\n";
-            } else if (same) {
-                ++identical;
-                env.out << check.name << ": the same verdict in " << variants.size() << " runs (a property check)\n";
-            } else {
-                ++differing;
-                env.out << check.name << ": DIFFERS: the property check's verdict changes between runs\n";
-            }
-            continue;
-        }
-        auto notRendered = std::find_if(check.renders.begin(), check.renders.end(),
-                                        [](const RenderOutcome& render) { return !render.rendered; });
-        if (notRendered != check.renders.end()) {
-            std::size_t variant = static_cast<std::size_t>(notRendered - check.renders.begin());
-            if (notRendered->status == GradeStatus::NotAttempted) {
-                ++skipped;
-                env.out << check.name << ": skipped, not attempted (" << notRendered->reason << ")\n";
-            } else {
-                ++failed;
-                env.out << check.name << ": FAILED to render (" << variants[variant].name
-                        << "): " << notRendered->reason << "\n";
-            }
-            continue;
-        }
-        std::vector<std::string> differences;
-        for (std::size_t v = 1; v < check.renders.size(); ++v) {
-            ImageDifference difference = compareExactly(first.image, check.renders[v].image);
-            if (!difference.identical())
-                differences.push_back(variants[v].name + " vs " + variants[0].name + ": " + difference.describe());
-        }
-        if (differences.empty()) {
-            ++identical;
-            env.out << check.name << ": identical in " << variants.size() << " renders\n";
-        } else {
-            ++differing;
-            env.out << check.name << ": DIFFERS";
-            for (const std::string& line : differences) env.out << "\n    " << line;
-            env.out << "\n";
-        }
+    std::map<Verdict, int> counts;
+    for (std::size_t first = 0; first < renders.size(); first += variants.size()) {
+        const std::vector<CaseOutcome> chunk(renders.begin() + first, renders.begin() + first + variants.size());
+        const CaseJob& job = chunk[0].job;
+        const CaseVerdict verdict = job.spec.check.empty() ? judgeRenders(chunk) : judgeCheck(chunk);
+        ++counts[verdict.verdict];
+        env.out << job.lab << "/" << job.spec.name << ": " << verdict.line << "\n";
     }
 
-    env.out << "\ndeterminism: " << identical << " identical, " << differing << " differing, " << failed
-            << " failed to render, " << skipped << " not attempted (renders: ";
+    env.out << "\ndeterminism: " << counts[Verdict::Identical] << " identical, " << counts[Verdict::Differs]
+            << " differing, " << counts[Verdict::Failed] << " failed to render, " << counts[Verdict::Skipped]
+            << " not attempted (renders: ";
     for (std::size_t v = 0; v < variants.size(); ++v) env.out << (v ? ", " : "") << variants[v].name;
     env.out << ")\n";
-    if (differing + failed > 0) {
-        env.out << "rendered images: " << workDir.string() << "/<lab>/<case>/variant-N/\n";
-        return 1;
-    }
-    if (options.workDir.empty()) {
-        std::error_code ignored;
-        std::filesystem::remove_all(workDir, ignored);
-    }
-    if (identical == 0) {
+    const bool trouble = counts[Verdict::Differs] + counts[Verdict::Failed] > 0;
+    run.finish(trouble, "rendered images", "/<lab>/<case>/variant-N/");
+    if (trouble) return 1;
+    if (counts[Verdict::Identical] == 0) {
         env.err << "stoa-grade: no case rendered, so nothing was compared (run it on a build whose labs are done)\n";
         return 1;
     }

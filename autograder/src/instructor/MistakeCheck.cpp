@@ -1,10 +1,12 @@
 #include "MistakeCheck.hpp"
 
 #include "Grader.hpp"
+#include "GradingRun.hpp"
 #include "Hints.hpp"
 #include "Report.hpp"
 
 #include <algorithm>
+#include <ostream>
 
 namespace stoa::grader {
 
@@ -119,14 +121,112 @@ MistakeVerdict judgeMistake(const MistakeFile& mistake, const std::vector<GradeR
     return verdict;
 }
 
+namespace {
+
+// Where a run of --check-mistakes (or --check-hints) finds its mistakes and programs.
+struct MistakeSource {
+    bool outOfGallery = false;
+    std::filesystem::path mistakesRoot;   // solutions/, or --check-hints DIR
+    std::string programFolder;            // "mistakes" or "out-of-gallery", under the bin folder
+};
+
+struct MistakePlan {
+    std::vector<MistakeRun> runs;
+    std::vector<CaseOutcome> outcomes;    // every run's cases; a run's are [firstJob, firstJob + jobCount)
+    std::vector<std::string> notBuilt;    // notes for the mistakes whose program is not built
+};
+
+// The "fails: names a case the manifest does not have" problems of a mistake.
+std::string manifestProblemOf(const MistakeFile& mistake, const PlannedLab& lab) {
+    std::string problem;
+    for (const std::string& name : mistake.fails)
+        if (!lab.manifest.find(name))
+            problem += (problem.empty() ? "" : "; ") + std::string("fails: names '") + name +
+                       "', which is not a case of " + lab.lab + " (cases: " + lab.manifest.caseNames() + ")";
+    return problem;
+}
+
+MistakePlan planMistakes(const std::vector<PlannedLab>& labs, const MistakeSource& source, const Environment& env,
+                         const std::filesystem::path& workDir) {
+    MistakePlan plan;
+    for (const PlannedLab& lab : labs) {
+        for (MistakeFile& mistake : loadMistakes(source.mistakesRoot / lab.lab)) {
+            std::filesystem::path program = mistakeProgram(env.binDir, lab.lab, mistake.name, source.programFolder);
+            if (!isExecutable(program)) {
+                plan.notBuilt.push_back("note: mistake " + lab.lab + "." + mistake.name + " is not built (no program " +
+                                        program.string() + "); skipping it");
+                continue;
+            }
+            MistakeRun run;
+            run.manifestProblem = manifestProblemOf(mistake, lab);
+            std::vector<CaseJob> jobs =
+                caseJobs(lab, program, env.sourceDir, workDir / source.programFolder / (lab.lab + "." + mistake.name));
+            // The gallery has no pictures of hidden cases, so they carry no hint: --check-hints skips them.
+            if (source.outOfGallery)
+                jobs.erase(std::remove_if(jobs.begin(), jobs.end(),
+                                          [](const CaseJob& job) { return job.spec.visibility == Visibility::Hidden; }),
+                           jobs.end());
+            run.firstJob = plan.outcomes.size();
+            run.jobCount = jobs.size();
+            for (CaseOutcome& outcome : plannedOutcomes(std::move(jobs), "mistake " + mistake.name))
+                plan.outcomes.push_back(std::move(outcome));
+            run.mistake = std::move(mistake);
+            plan.runs.push_back(std::move(run));
+        }
+    }
+    return plan;
+}
+
+void explainNothingToCheck(const MistakePlan& plan, const MistakeSource& source, const Environment& env) {
+    env.err << "stoa-grade: no mistake program to check in " << (env.binDir / source.programFolder).string();
+    if (plan.notBuilt.empty())
+        env.err << ": no " << (source.outOfGallery ? source.mistakesRoot.string() + "/" : std::string("solutions/"))
+                << "NN_name/mistakes/*.mistake file for the selected labs\n";
+    else
+        env.err << ": none of the " << plan.notBuilt.size() << " planted mistakes is built; they are built "
+                << "by a solutions build with tests (-DSTOA_USE_SOLUTIONS=ON -DSTOA_BUILD_TESTS=ON)\n";
+}
+
+// The verdict table; returns how many mistakes were caught.
+int printVerdicts(const MistakePlan& plan, const std::vector<CaseOutcome>& outcomes, const MistakeSource& source,
+                  std::ostream& out) {
+    std::size_t nameWidth = 7, failsWidth = 10;
+    for (const MistakeRun& run : plan.runs) {
+        nameWidth = std::max(nameWidth, run.mistake.lab.size() + 1 + run.mistake.name.size());
+        failsWidth = std::max(failsWidth, joined(run.mistake.fails).size());
+    }
+    out << "\n" << padded("mistake", nameWidth) << "  " << padded("must fail", failsWidth) << "  result\n";
+    out << std::string(nameWidth + failsWidth + 4 + 30, '-') << "\n";
+    int caught = 0;
+    for (const MistakeRun& run : plan.runs) {
+        std::vector<GradeResult> own;
+        for (std::size_t i = run.firstJob; i < run.firstJob + run.jobCount; ++i) own.push_back(outcomes[i].result);
+        MistakeVerdict verdict =
+            source.outOfGallery ? judgeOutOfGallery(run.mistake, own) : judgeMistake(run.mistake, own);
+        if (!run.manifestProblem.empty()) verdict = MistakeVerdict{false, "NOT checked: " + run.manifestProblem};
+        if (verdict.caught) ++caught;
+        out << padded(run.mistake.lab + "." + run.mistake.name, nameWidth) << "  "
+            << padded(joined(run.mistake.fails), failsWidth) << "  " << verdict.detail << "\n";
+    }
+    if (source.outOfGallery)
+        out << "\n" << caught << " of " << plan.runs.size()
+            << " mistakes outside the gallery fail as their fails: line says and get no wrong hint\n";
+    else
+        out << "\n" << caught << " of " << plan.runs.size() << " mistakes caught\n";
+    return caught;
+}
+
+} // namespace
+
 int runCheckMistakes(const Options& options, const Environment& env) {
     std::vector<PlannedLab> labs = planLabs(options, env, false);
     std::filesystem::path solutionsDir = env.sourceDir / "solutions";
-    bool outOfGallery = !options.outOfGalleryDir.empty();
-    std::filesystem::path mistakesRoot = outOfGallery ? options.outOfGalleryDir : solutionsDir;
-    std::string programFolder = outOfGallery ? "out-of-gallery" : "mistakes";
-    if (outOfGallery && !std::filesystem::is_directory(mistakesRoot)) {
-        env.err << "stoa-grade: --check-hints " << mistakesRoot.string() << " is not a folder\n";
+    MistakeSource source;
+    source.outOfGallery = !options.outOfGalleryDir.empty();
+    source.mistakesRoot = source.outOfGallery ? options.outOfGalleryDir : solutionsDir;
+    source.programFolder = source.outOfGallery ? "out-of-gallery" : "mistakes";
+    if (source.outOfGallery && !std::filesystem::is_directory(source.mistakesRoot)) {
+        env.err << "stoa-grade: --check-hints " << source.mistakesRoot.string() << " is not a folder\n";
         return 1;
     }
     if (!std::filesystem::is_directory(solutionsDir)) {
@@ -135,97 +235,21 @@ int runCheckMistakes(const Options& options, const Environment& env) {
         return 1;
     }
 
-    std::filesystem::path workDir = makeWorkDir(options.workDir);
-    std::vector<MistakeRun> runs;
-    std::vector<CaseJob> jobs;
-    std::vector<std::string> notBuilt;
-    for (const PlannedLab& lab : labs) {
-        for (MistakeFile& mistake : loadMistakes(mistakesRoot / lab.lab)) {
-            std::filesystem::path program = mistakeProgram(env.binDir, lab.lab, mistake.name, programFolder);
-            if (!isExecutable(program)) {
-                notBuilt.push_back("note: mistake " + lab.lab + "." + mistake.name + " is not built (no program " +
-                                   program.string() + "); skipping it");
-                continue;
-            }
-            MistakeRun run;
-            run.mistake = std::move(mistake);
-            for (const std::string& name : run.mistake.fails)
-                if (!lab.manifest.find(name))
-                    run.manifestProblem += (run.manifestProblem.empty() ? "" : "; ") + std::string("fails: names '") +
-                                           name + "', which is not a case of " + lab.lab + " (cases: " +
-                                           lab.manifest.caseNames() + ")";
-            std::vector<CaseJob> labJobs =
-                caseJobs(lab, program, env.sourceDir, workDir / programFolder / (lab.lab + "." + run.mistake.name));
-            // The gallery has no pictures of hidden cases, so they carry no hint: --check-hints skips them.
-            if (outOfGallery)
-                labJobs.erase(std::remove_if(labJobs.begin(), labJobs.end(),
-                                             [](const CaseJob& job) { return job.spec.visibility == Visibility::Hidden; }),
-                              labJobs.end());
-            run.firstJob = jobs.size();
-            run.jobCount = labJobs.size();
-            jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
-            runs.push_back(std::move(run));
-        }
-    }
-    if (runs.empty()) {
-        if (options.workDir.empty()) {
-            std::error_code ignored;
-            std::filesystem::remove_all(workDir, ignored);
-        }
-        env.err << "stoa-grade: no mistake program to check in " << (env.binDir / programFolder).string();
-        if (notBuilt.empty())
-            env.err << ": no " << (outOfGallery ? mistakesRoot.string() + "/" : std::string("solutions/"))
-                    << "NN_name/mistakes/*.mistake file for the selected labs\n";
-        else
-            env.err << ": none of the " << notBuilt.size() << " planted mistakes is built; they are built "
-                    << "by a solutions build with tests (-DSTOA_USE_SOLUTIONS=ON -DSTOA_BUILD_TESTS=ON)\n";
+    GradingRun run(options, env);
+    MistakePlan plan = planMistakes(labs, source, env, run.workDir());
+    if (plan.runs.empty()) {
+        run.finish(false);
+        explainNothingToCheck(plan, source, env);
         return 1;
     }
-    for (const std::string& note : notBuilt) env.err << note << "\n";
+    for (const std::string& note : plan.notBuilt) env.err << note << "\n";
 
-    std::vector<std::string> labels(jobs.size());
-    for (const MistakeRun& run : runs)
-        for (std::size_t i = run.firstJob; i < run.firstJob + run.jobCount; ++i)
-            labels[i] = "mistake " + run.mistake.name;
-    HintGallery gallery = HintGallery::load(jobs);   // read before any lab program runs
-    std::vector<GradeResult> results = gradeCases(
-        jobs, runSettings(options, env.sourceDir, workDir), options.jobs,
-        [&](std::size_t index, const GradeResult& result, std::size_t done, std::size_t total) {
-            env.err << progressLine(result, done, total, labels[index]) << std::endl;
-        });
-    addHints(results, jobs, gallery, options.jobs);
-
-    std::size_t nameWidth = 7, failsWidth = 10;
-    for (const MistakeRun& run : runs) {
-        nameWidth = std::max(nameWidth, run.mistake.lab.size() + 1 + run.mistake.name.size());
-        failsWidth = std::max(failsWidth, joined(run.mistake.fails).size());
-    }
-    env.out << "\n" << padded("mistake", nameWidth) << "  " << padded("must fail", failsWidth) << "  result\n";
-    env.out << std::string(nameWidth + failsWidth + 4 + 30, '-') << "\n";
-    int caught = 0;
-    bool keepImages = false;
-    for (const MistakeRun& run : runs) {
-        std::vector<GradeResult> own(results.begin() + run.firstJob, results.begin() + run.firstJob + run.jobCount);
-        MistakeVerdict verdict = outOfGallery ? judgeOutOfGallery(run.mistake, own) : judgeMistake(run.mistake, own);
-        if (!run.manifestProblem.empty()) verdict = MistakeVerdict{false, "NOT checked: " + run.manifestProblem};
-        if (verdict.caught) ++caught;
-        else keepImages = true;
-        env.out << padded(run.mistake.lab + "." + run.mistake.name, nameWidth) << "  "
-                << padded(joined(run.mistake.fails), failsWidth) << "  " << verdict.detail << "\n";
-    }
-    if (outOfGallery)
-        env.out << "\n" << caught << " of " << runs.size()
-                << " mistakes outside the gallery fail as their fails: line says and get no wrong hint\n";
-    else
-        env.out << "\n" << caught << " of " << runs.size() << " mistakes caught\n";
-
-    if (keepImages || !options.workDir.empty()) {
-        env.out << "rendered images and heat maps: " << workDir.string() << "\n";
-    } else {
-        std::error_code ignored;
-        std::filesystem::remove_all(workDir, ignored);
-    }
-    return caught == static_cast<int>(runs.size()) ? 0 : 1;
+    std::vector<CaseOutcome> outcomes = run.grade(plan.outcomes);
+    run.addHints(outcomes);
+    const int caught = printVerdicts(plan, outcomes, source, env.out);
+    const bool allCaught = caught == static_cast<int>(plan.runs.size());
+    run.finish(!allCaught || !options.workDir.empty());
+    return allCaught ? 0 : 1;
 }
 
 } // namespace stoa::grader

@@ -1,6 +1,7 @@
 #include "ReferenceUpdate.hpp"
 
 #include "Grader.hpp"
+#include "GradingRun.hpp"
 #include "MistakeGallery.hpp"
 #include "RenderTimes.hpp"
 
@@ -9,7 +10,6 @@
 
 #include <cstring>
 #include <map>
-#include <mutex>
 #include <sstream>
 
 namespace stoa::grader {
@@ -70,14 +70,11 @@ std::string trackFromInfo(const std::string& infoOutput) {
     return "";
 }
 
-int runUpdateReferences(const Options& options, const Environment& env) {
-    std::vector<PlannedLab> labs = planLabs(options, env, true);
-    if (labs.empty()) {
-        env.err << "stoa-grade: no lab program to run in " << env.binDir.string()
-                << ": build the solutions first (cmake -DSTOA_USE_SOLUTIONS=ON, then cmake --build)\n";
-        return 1;
-    }
+namespace {
 
+// References come from the solutions only: each lab program must say it was
+// built from them (its --info). Returns the refusals, none when all may write.
+std::vector<std::string> refusalsToWrite(const std::vector<PlannedLab>& labs) {
     ProcessLimits infoLimits = withTimeout(defaultLimits(kInfoTimeoutSeconds), kInfoTimeoutSeconds);
     std::vector<std::string> refusals;
     for (const PlannedLab& lab : labs) {
@@ -89,6 +86,52 @@ int runUpdateReferences(const Options& options, const Environment& env) {
             refusals.push_back(lab.program.string() + " is built from " +
                                (track.empty() ? std::string("an unknown track (no track= line)") : "track=" + track));
     }
+    return refusals;
+}
+
+// Writes each case's reference (or, for a property check, checks that the
+// solution's holds); returns how many could not be written.
+int writeReferences(const std::vector<CaseOutcome>& cases, const Environment& env) {
+    int failures = 0;
+    for (const CaseOutcome& outcome : cases) {
+        const CaseJob& job = outcome.job;
+        bool ok = false;
+        std::string line;
+        if (!job.spec.check.empty()) {
+            // A property check has no reference image: the solution's must hold.
+            ok = outcome.render.status == GradeStatus::Passed;
+            line = ok ? "property check holds (no reference image)"
+                      : std::string(statusName(outcome.render.status)) + ": " + outcome.render.reason;
+        } else {
+            line = writeOrKeepImage(job.reference, job.spec.compare, outcome.render, ok);
+        }
+        if (!ok) ++failures;
+        env.out << job.lab << "/" << job.spec.name << ": " << line << "\n";
+    }
+    env.out << "references in " << (env.sourceDir / "autograder" / "references").string() << ": "
+            << cases.size() - failures << " of " << cases.size() << " up to date\n";
+    return failures;
+}
+
+// The render times beside the references, from which each case's timeout comes.
+void writeRenderTimes(const std::vector<CaseOutcome>& cases, const Environment& env) {
+    std::map<std::filesystem::path, std::map<std::string, double>> times;
+    for (const CaseOutcome& outcome : cases)
+        if (outcome.render.rendered)
+            times[outcome.job.reference.parent_path()][outcome.job.spec.name] = outcome.render.process.seconds;
+    for (const auto& [folder, measured] : times) {
+        std::filesystem::path file = renderTimesPath(folder);
+        if (updateRenderTimes(file, measured)) env.out << "render times: updated " << file.string() << "\n";
+    }
+}
+
+} // namespace
+
+int runUpdateReferences(const Options& options, const Environment& env) {
+    std::vector<PlannedLab> labs = planLabs(options, env, true);
+    if (noProgramToRun(labs, env, "build the solutions first (cmake -DSTOA_USE_SOLUTIONS=ON, then cmake --build)"))
+        return 1;
+    const std::vector<std::string> refusals = refusalsToWrite(labs);
     if (!refusals.empty()) {
         env.err << "stoa-grade: refusing to write references: they must come from the solutions.\n";
         for (const std::string& line : refusals) env.err << "  " << line << "\n";
@@ -97,80 +140,38 @@ int runUpdateReferences(const Options& options, const Environment& env) {
         return 1;
     }
 
-    std::filesystem::path workDir = makeWorkDir(options.workDir);
-    RunSettings settings = runSettings(options, env.sourceDir, workDir);
-    std::vector<CaseJob> jobs;
-    for (const PlannedLab& lab : labs) {
-        std::vector<CaseJob> labJobs = caseJobs(lab, lab.program, env.sourceDir, workDir);
-        jobs.insert(jobs.end(), labJobs.begin(), labJobs.end());
-    }
+    GradingRun run(options, env);
+    std::vector<CaseOutcome> planned;
+    for (const PlannedLab& lab : labs)
+        for (CaseOutcome& outcome : plannedOutcomes(caseJobs(lab, lab.program, env.sourceDir, run.workDir())))
+            planned.push_back(std::move(outcome));
+    const std::size_t caseCount = planned.size();
     // The planted mistakes' renders for the gallery go in the same parallel pass.
     std::vector<std::string> notes;
-    std::vector<GalleryJob> gallery = galleryJobs(labs, env, workDir, notes);
+    std::vector<GalleryJob> gallery = galleryJobs(labs, env, run.workDir(), notes);
     for (const std::string& note : notes) env.err << note << "\n";
-    std::vector<CaseJob> allJobs = jobs;
-    for (const GalleryJob& job : gallery) allJobs.push_back(job.job);
+    for (const GalleryJob& job : gallery)
+        for (CaseOutcome& outcome : plannedOutcomes({job.job}, "mistake " + job.mistake.name))
+            planned.push_back(std::move(outcome));
 
-    std::vector<RenderOutcome> renders(allJobs.size());
-    std::mutex progressMutex;
-    std::size_t done = 0;
-    forEachInParallel(allJobs.size(), options.jobs, [&](std::size_t i) {
-        renders[i] = renderCase(allJobs[i], settings);
-        std::lock_guard<std::mutex> lock(progressMutex);
-        env.err << "[" << ++done << "/" << allJobs.size() << "] "
-                << (i < jobs.size() ? "" : "mistake " + gallery[i - jobs.size()].mistake.name + ": ")
-                << allJobs[i].lab << "/" << allJobs[i].spec.name << " ... "
-                << (renders[i].rendered ? "rendered" : statusName(renders[i].status)) << std::endl;
-    });
-
-    int failures = 0;
-    for (std::size_t i = 0; i < jobs.size(); ++i) {
-        bool ok = false;
-        std::string line;
-        if (!jobs[i].spec.check.empty()) {
-            // A property check has no reference image: the solution's must hold.
-            ok = renders[i].status == GradeStatus::Passed;
-            line = ok ? "property check holds (no reference image)"
-                      : std::string(statusName(renders[i].status)) + ": " + renders[i].reason;
-        } else {
-            line = writeOrKeepImage(jobs[i].reference, jobs[i].spec.compare, renders[i], ok);
-        }
-        if (!ok) ++failures;
-        env.out << jobs[i].lab << "/" << jobs[i].spec.name << ": " << line << "\n";
-    }
-    env.out << "references in " << (env.sourceDir / "autograder" / "references").string() << ": "
-            << jobs.size() - failures << " of " << jobs.size() << " up to date\n";
-
-    // The render times beside the references, from which each case's timeout comes.
-    std::map<std::filesystem::path, std::map<std::string, double>> times;
-    for (std::size_t i = 0; i < jobs.size(); ++i)
-        if (renders[i].rendered)
-            times[jobs[i].reference.parent_path()][jobs[i].spec.name] = renders[i].process.seconds;
-    for (const auto& [folder, measured] : times) {
-        std::filesystem::path file = renderTimesPath(folder);
-        if (updateRenderTimes(file, measured)) env.out << "render times: updated " << file.string() << "\n";
-    }
+    std::vector<CaseOutcome> rendered = run.render(std::move(planned));
+    std::vector<CaseOutcome> galleryRendered(rendered.begin() + caseCount, rendered.end());
+    rendered.resize(caseCount);
+    int failures = writeReferences(rendered, env);
+    writeRenderTimes(rendered, env);
 
     if (!gallery.empty() || !notes.empty()) {
-        std::vector<RenderOutcome> galleryRenders(renders.begin() + jobs.size(), renders.end());
-        GallerySummary summary =
-            updateGallery(gallery, galleryRenders, labs, env, options.cases.empty(), env.out);
+        std::vector<RenderOutcome> galleryRenders;
+        for (const CaseOutcome& outcome : galleryRendered) galleryRenders.push_back(outcome.render);
+        GallerySummary summary = updateGallery(gallery, galleryRenders, labs, env, options.cases.empty(), env.out);
         env.out << "gallery: " << summary.images << " images (" << summary.written << " new or changed, "
                 << summary.removed << " removed";
         if (summary.problems > 0) env.out << ", " << summary.problems << " problems";
         env.out << ") in autograder/references/<lab>/mistakes/\n";
         failures += summary.problems;
     }
-
-    if (failures > 0) {
-        env.out << "rendered images: " << workDir.string() << "\n";
-        return 1;
-    }
-    if (options.workDir.empty()) {
-        std::error_code ignored;
-        std::filesystem::remove_all(workDir, ignored);
-    }
-    return 0;
+    run.finish(failures > 0, "rendered images");
+    return failures > 0 ? 1 : 0;
 }
 
 } // namespace stoa::grader

@@ -8,6 +8,8 @@
 #include <stoa/lab/LabProtocol.hpp>
 
 #include <exception>
+#include <filesystem>
+#include <optional>
 
 namespace stoa::grader {
 
@@ -82,6 +84,7 @@ RenderOutcome renderCase(const CaseJob& job, const RunSettings& settings) {
         ProcessLimits limits = settings.limits;
         limits.files = labProgramAccess(job, settings);
         limits.environment.push_back("TMPDIR=" + job.workDir.string());
+        limits.environment.insert(limits.environment.end(), job.environment.begin(), job.environment.end());
         if (!settings.shaderCache.empty())
             limits.environment.push_back("MESA_SHADER_CACHE_DIR=" + settings.shaderCache.string());
         outcome.process = runProcess(argv, job.workDir, limits);
@@ -152,6 +155,68 @@ GradeResult ungradedResult(const CaseJob& job) {
     return result;
 }
 
+namespace {
+
+// The reference picture: the guard's copy, taken before any lab program ran, or
+// the file. Empty when there is none; `decodeError` says why one did not decode.
+Image referenceOf(const CaseJob& job, ReferenceGuard* guard, std::string& decodeError) {
+    Image reference;
+    if (guard) {
+        if (const Image* guarded = guard->image(job.reference)) reference = *guarded;
+        decodeError = guard->decodeError(job.reference);
+    } else if (std::filesystem::exists(job.reference)) {
+        try {
+            reference = Image::load(job.reference);
+        } catch (const InputError& error) {
+            decodeError = error.message();
+        }
+    }
+    return reference;
+}
+
+// Why `reference` cannot be compared with the case's picture (Error or
+// NoReference in `status`); nothing when it can.
+std::optional<std::string> referenceProblem(const CaseJob& job, const Image& reference, const std::string& decodeError,
+                                            GradeStatus& status) {
+    status = GradeStatus::Error;
+    if (!decodeError.empty())
+        return "the reference image does not decode (" + decodeError +
+               "); regenerate it with stoa-grade --update-references";
+    if (reference.empty()) {
+        status = GradeStatus::NoReference;
+        return std::string(kNoReference);
+    }
+    if (reference.width() != job.spec.width || reference.height() != job.spec.height)
+        return "the reference is " + sizeText(reference.width(), reference.height()) + " but the case renders " +
+               sizeText(job.spec.width, job.spec.height) + "; regenerate it with stoa-grade --update-references";
+    return std::nullopt;
+}
+
+// The comparison of a rendered picture with its reference, and for a failed
+// case where it differs and its heat map (<workDir>/heatmap.png).
+void compareWithReference(const CaseJob& job, const Image& rendered, const Image& reference, GradeResult& result) {
+    CompareResult comparison = compareImages(rendered, reference, job.spec.compare);
+    result.reason = comparison.summary;
+    result.metrics = metricsOf(comparison);
+    if (comparison.passed) {
+        result.status = GradeStatus::Passed;
+        result.points = job.spec.points;
+        return;
+    }
+    result.status = GradeStatus::Failed;
+    result.difference = describeDifference(rendered, reference, job.spec.compare);
+    try {
+        std::filesystem::path heatMap = job.workDir / "heatmap.png";
+        // From the comparison already made: FLIP does not run twice.
+        differenceHeatMap(rendered, reference, comparison, job.spec.compare).savePng(heatMap);
+        result.heatMapImage = heatMap;
+    } catch (const std::exception& error) {
+        result.reason += " (no heat map: " + std::string(error.what()) + ")";
+    }
+}
+
+} // namespace
+
 GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, ReferenceGuard* guard) {
     GradeResult result = ungradedResult(job);
 
@@ -177,55 +242,13 @@ GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, Reference
     }
 
     try {
-        Image reference;
         std::string decodeError;
-        if (guard) {
-            // The copy taken before any lab program ran.
-            if (const Image* guarded = guard->image(job.reference)) reference = *guarded;
-            decodeError = guard->decodeError(job.reference);
-        } else if (std::filesystem::exists(job.reference)) {
-            try {
-                reference = Image::load(job.reference);
-            } catch (const InputError& error) {
-                decodeError = error.message();
-            }
-        }
-        if (!decodeError.empty()) {
-            result.status = GradeStatus::Error;
-            result.reason = "the reference image does not decode (" + decodeError +
-                            "); regenerate it with stoa-grade --update-references";
+        const Image reference = referenceOf(job, guard, decodeError);
+        if (std::optional<std::string> problem = referenceProblem(job, reference, decodeError, result.status)) {
+            result.reason = *problem;
             return result;
         }
-        if (reference.empty()) {
-            result.status = GradeStatus::NoReference;
-            result.reason = kNoReference;
-            return result;
-        }
-        if (reference.width() != job.spec.width || reference.height() != job.spec.height) {
-            result.status = GradeStatus::Error;
-            result.reason = "the reference is " + sizeText(reference.width(), reference.height()) +
-                            " but the case renders " + sizeText(job.spec.width, job.spec.height) +
-                            "; regenerate it with stoa-grade --update-references";
-            return result;
-        }
-        CompareResult comparison = compareImages(render.image, reference, job.spec.compare);
-        result.reason = comparison.summary;
-        result.metrics = metricsOf(comparison);
-        if (comparison.passed) {
-            result.status = GradeStatus::Passed;
-            result.points = job.spec.points;
-            return result;
-        }
-        result.status = GradeStatus::Failed;
-        result.difference = describeDifference(render.image, reference, job.spec.compare);
-        try {
-            std::filesystem::path heatMap = job.workDir / "heatmap.png";
-            // From the comparison already made: FLIP does not run twice.
-            differenceHeatMap(render.image, reference, comparison, job.spec.compare).savePng(heatMap);
-            result.heatMapImage = heatMap;
-        } catch (const std::exception& error) {
-            result.reason += " (no heat map: " + std::string(error.what()) + ")";
-        }
+        compareWithReference(job, render.image, reference, result);
     } catch (const std::exception& error) {
         result.status = GradeStatus::Error;
         result.points = 0.0;

@@ -25,8 +25,11 @@ struct CaseJob {
     CaseSpec spec;                        // size, points, visibility, compare options
     std::filesystem::path reference;      // may not exist: the result is then "no reference"
     std::filesystem::path workDir;        // emptied and recreated; the program runs and writes there
-    std::filesystem::path casesFile;      // passed as --cases when not empty: a hidden case's manifest
+    std::filesystem::path casesFile;      // passed as --cases when not empty: the manifest the case was planned
+                                          // from (cases.ini or hidden_cases.ini), so the program reads the case
+                                          // the grader planned, not one of its own
     bool cascade = false;                 // `program` is the lab's cascade program (Cascade.hpp)
+    std::vector<std::string> environment; // more NAME=VALUE for this job's program (--determinism's variants)
     CaseTimeouts timeouts;                // from the solution's render time (RenderTimes.hpp)
 };
 

@@ -90,7 +90,8 @@ std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path
         const std::map<std::string, double>& times = hidden ? hiddenTimes : publicTimes;
         auto time = times.find(spec.name);
         job.timeouts = caseTimeouts(time == times.end() ? 0.0 : time->second, sanitized);
-        if (hidden) job.casesFile = lab.hiddenManifest;
+        // The lab program reads the case from the manifest the grader planned from.
+        if (!spec.file.empty()) job.casesFile = std::filesystem::absolute(spec.file);
         jobs.push_back(std::move(job));
     }
     return jobs;

@@ -45,8 +45,10 @@ void addHiddenCases(PlannedLab& lab, const std::filesystem::path& hiddenManifest
 std::vector<PlannedLab> planLabs(const Options& options, const Environment& env, bool requirePrograms);
 
 /// One job per selected case of `lab`, run by `program`, each in its own folder
-/// <workDir>/<lab>/<case>. A hidden case's job passes --cases <hidden manifest> and
-/// compares with solutions/NN_name/references/CASE.png. With `cascade`, the jobs
+/// <workDir>/<lab>/<case>. Each job passes the program --cases <the manifest the
+/// case was planned from> (labs/NN_name/cases.ini, or hidden_cases.ini), so the
+/// grader and the program read one file; a hidden case compares with
+/// solutions/NN_name/references/CASE.png. With `cascade`, the jobs
 /// are marked as the lab's cascade run and work in <workDir>/cascade/<lab>/<case>.
 std::vector<CaseJob> caseJobs(const PlannedLab& lab, const std::filesystem::path& program,
                               const std::filesystem::path& sourceDir, const std::filesystem::path& workDir,

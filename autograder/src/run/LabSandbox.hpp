@@ -5,7 +5,7 @@
 //     labs/ and autograder/references/ (what the student release holds too);
 //   - its own build (the folder with the CMakeCache.txt above the program: its
 //     student files, overlays and generated sources), without the work folder;
-//   - the hidden manifest its case comes from (--cases), and the suppressions
+//   - the manifest its case comes from (--cases), and the suppressions
 //     files its sanitizer runtime is told to read (ASAN_OPTIONS and the like);
 //   - solutions/ only when the program was built from it (a solutions build:
 //     references, planted mistakes); a student's cascade program (Cascade.hpp)

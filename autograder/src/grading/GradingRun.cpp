@@ -1,0 +1,73 @@
+#include "GradingRun.hpp"
+
+#include "Grader.hpp"
+
+#include <mutex>
+
+namespace stoa::grader {
+
+namespace {
+
+std::vector<CaseJob> jobsOf(const std::vector<CaseOutcome>& outcomes) {
+    std::vector<CaseJob> jobs;
+    jobs.reserve(outcomes.size());
+    for (const CaseOutcome& outcome : outcomes) jobs.push_back(outcome.job);
+    return jobs;
+}
+
+} // namespace
+
+bool noProgramToRun(const std::vector<PlannedLab>& labs, const Environment& env, const std::string& howToBuild) {
+    if (!labs.empty()) return false;
+    env.err << "stoa-grade: no lab program to run in " << env.binDir.string() << ": " << howToBuild << "\n";
+    return true;
+}
+
+GradingRun::GradingRun(const Options& options, const Environment& env)
+    : m_options(options), m_env(env), m_workDir(makeWorkDir(options.workDir)),
+      m_settings(runSettings(options, env.sourceDir, m_workDir)) {}
+
+void GradingRun::readGallery(const std::vector<CaseOutcome>& outcomes) { m_gallery.add(jobsOf(outcomes)); }
+
+std::vector<CaseOutcome> GradingRun::grade(std::vector<CaseOutcome> planned) {
+    if (planned.empty()) return planned;
+    const std::vector<CaseJob> jobs = jobsOf(planned);
+    m_gallery.add(jobs);   // before any of them runs
+    std::vector<GradeResult> results =
+        gradeCases(jobs, m_settings, m_options.jobs, [&](std::size_t index, const GradeResult& result, std::size_t done,
+                                                         std::size_t total) {
+            m_env.err << progressLine(result, done, total, planned[index].label) << std::endl;
+        });
+    for (std::size_t i = 0; i < planned.size(); ++i) planned[i].result = std::move(results[i]);
+    return planned;
+}
+
+std::vector<CaseOutcome> GradingRun::render(std::vector<CaseOutcome> planned) {
+    std::mutex progressMutex;
+    std::size_t done = 0;
+    forEachInParallel(planned.size(), m_options.jobs, [&](std::size_t i) {
+        CaseOutcome& outcome = planned[i];
+        outcome.render = renderCase(outcome.job, m_settings);
+        std::lock_guard<std::mutex> lock(progressMutex);
+        m_env.err << "[" << ++done << "/" << planned.size() << "] "
+                  << (outcome.label.empty() ? "" : outcome.label + ": ") << outcome.job.lab << "/"
+                  << outcome.job.spec.name << " ... "
+                  << (outcome.render.rendered ? "rendered" : statusName(outcome.render.status)) << std::endl;
+    });
+    return planned;
+}
+
+void GradingRun::addHints(std::vector<CaseOutcome>& outcomes) const {
+    grader::addHints(outcomes, m_gallery, m_options.jobs);
+}
+
+void GradingRun::finish(bool keepImages, const std::string& what, const std::string& under) {
+    if (keepImages) {
+        m_env.out << what << ": " << m_workDir.string() << under << "\n";
+    } else if (m_options.workDir.empty()) {
+        std::error_code ignored;
+        std::filesystem::remove_all(m_workDir, ignored);
+    }
+}
+
+} // namespace stoa::grader
