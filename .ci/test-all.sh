@@ -91,12 +91,12 @@ trap print_table EXIT
 # Release: the tests need no debug info, and -O2 without -g compiles and links
 # markedly faster than RelWithDebInfo (a student's build keeps RelWithDebInfo).
 stage "solutions: configure" configure build-solutions -DSTOA_USE_SOLUTIONS=ON -DCMAKE_BUILD_TYPE=Release \
-      -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -DSTOA_E2E_LAB=
+      -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -DSTOA_E2E_LAB= -DSTOA_WERROR=ON
 stage "solutions: build" cmake --build build-solutions -j"$jobs"
 stage "solutions: test" run_tests build-solutions solutions
 
 stage "sanitizer: configure" configure build-sanitize -DSTOA_USE_SOLUTIONS=ON -DSTOA_SANITIZE=ON \
-      -DCMAKE_BUILD_TYPE=Debug -DSTOA_E2E_LAB=04_normal_mapping -DSTOA_BUILD_BENCHMARKS=OFF
+      -DCMAKE_BUILD_TYPE=Debug -DSTOA_E2E_LAB=04_normal_mapping -DSTOA_BUILD_BENCHMARKS=OFF -DSTOA_WERROR=ON
 stage "sanitizer: build" cmake --build build-sanitize -j"$jobs"
 # Mesa's own allocations live until exit; LeakSanitizer reports only Stoa's.
 export LSAN_OPTIONS="suppressions=$root/.ci/lsan.supp:print_suppressions=0"

@@ -1,5 +1,5 @@
 #include <stoa/app/HeadlessContext.hpp>
-#include <stoa/gl/StateCache.hpp>
+#include <stoa/gl/GpuResources.hpp>
 
 #include <stoa/core/Assert.hpp>
 #include <stoa/core/InputError.hpp>
@@ -313,10 +313,12 @@ HeadlessContext::HeadlessContext(std::optional<HeadlessBackend> backend)
         gl::loadFunctions(&eglProcAddress, "EGL");
     }
     s_liveBackend = m_backend;
-    StateCache::current().reset();
+    m_resources = std::make_unique<GpuResources>();
+    GpuResources::makeCurrent(m_resources.get());
 }
 
 HeadlessContext::~HeadlessContext() {
+    m_resources.reset();   // its GL objects first, while the context is alive
     m_state.reset();
     s_liveBackend.reset();
 }

@@ -3,7 +3,7 @@
 #include <stoa/core/Assert.hpp>
 #include <stoa/gl/FunctionLoader.hpp>
 #include <stoa/gl/OpenGL.hpp>
-#include <stoa/gl/StateCache.hpp>
+#include <stoa/gl/GpuResources.hpp>
 
 #include <GL/freeglut.h>
 
@@ -204,7 +204,8 @@ Window::Window(int& argc, char** argv, const WindowOptions& options) {
     glutCreateWindow(options.title.c_str());
     gl::loadFunctions(gl::glxLoader(), "GLX window");
 
-    StateCache::current().reset();
+    m_resources = std::make_unique<GpuResources>();
+    GpuResources::makeCurrent(m_resources.get());
 
     m_state = std::make_unique<State>();
     m_state->window = this;
@@ -212,7 +213,10 @@ Window::Window(int& argc, char** argv, const WindowOptions& options) {
     s_current = m_state.get();
 }
 
-Window::~Window() { s_current = nullptr; }
+Window::~Window() {
+    s_current = nullptr;
+    m_resources.reset();   // its GL objects, while the window's context is alive
+}
 
 void Window::run(WindowHandler& handler) {
     m_state->handler = &handler;

@@ -382,103 +382,133 @@ struct ObjData {
     int lines = 0;
 };
 
-ObjData readObj(const std::string& text, const fs::path& path, const MtlReader& readMtl, std::ostream& warnings) {
-    const std::string file = path.string();
-    ObjData data;
-    std::set<std::string> loadedMtlFiles;  // each MTL file is read once
-    std::string material;                  // the current usemtl name; empty = none
-    std::map<std::string, std::size_t> partOf;
-    PartTriangles* part = nullptr;          // the part of `material`, made at its first face
-    std::vector<Corner> face;
-    float values[7];
+/// The state of one OBJ file's read, a statement at a time.
+class ObjReader {
+public:
+    ObjReader(const fs::path& path, const MtlReader& readMtl, std::ostream& warnings)
+        : m_path(path), m_file(path.string()), m_readMtl(readMtl), m_warnings(warnings) {}
 
-    forEachLine(checkedText(text, file), [&](int line, std::string_view raw, std::vector<std::string_view>& words) {
-        data.lines = line;
+    void statement(int line, std::string_view raw, std::vector<std::string_view>& words) {
+        m_data.lines = line;
         const std::string_view key = words[0];
-        if (key == "f") {
-            if (words.size() < 4) {
-                throw InputError(file, line,
-                                 "a face needs at least 3 corners, found " + std::to_string(words.size() - 1));
-            }
-            face.clear();
-            const int positions = static_cast<int>(data.positions.size()), uvs = static_cast<int>(data.uvs.size()),
-                      normals = static_cast<int>(data.normals.size());
-            for (std::size_t i = 1; i < words.size(); ++i) {
-                face.push_back(readCorner(words[i], positions, uvs, normals, file, line));
-            }
-            if (!part) {
-                const auto found = partOf.find(material);
-                if (found == partOf.end()) {
-                    partOf.emplace(material, data.parts.size());
-                    data.parts.push_back({material, {}});
-                    part = &data.parts.back();
-                } else {
-                    part = &data.parts[found->second];
-                }
-            }
-            triangulate(face, data.positions, part->corners, file, line);
-            ++data.faces;
-            return;
-        }
+        if (key == "f") return face(line, words);
         dropComment(words);
+        if (key == "v" || key == "vt" || key == "vn") {
+            vertexData(key, line, words);
+        } else if (key == "l" || key == "p") {
+            // Lines and points are not drawn, but their indices are checked like a face's.
+            for (std::size_t i = 1; i < words.size(); ++i) (void)corner(words[i], line);
+        } else if (key == "mtllib") {
+            mtllib(line, words);
+        } else if (key == "usemtl") {
+            usemtl(line, raw);
+        }
+        // o, g, s, mg and statements Stoa does not use are skipped.
+    }
+
+    ObjData take() { return std::move(m_data); }
+
+private:
+    Corner corner(std::string_view word, int line) const {
+        return readCorner(word, static_cast<int>(m_data.positions.size()), static_cast<int>(m_data.uvs.size()),
+                          static_cast<int>(m_data.normals.size()), m_file, line);
+    }
+
+    void face(int line, const std::vector<std::string_view>& words) {
+        if (words.size() < 4)
+            throw InputError(m_file, line, "a face needs at least 3 corners, found " + std::to_string(words.size() - 1));
+        m_face.clear();
+        for (std::size_t i = 1; i < words.size(); ++i) m_face.push_back(corner(words[i], line));
+        if (!m_part) {
+            const auto found = m_partOf.find(m_material);
+            if (found == m_partOf.end()) {
+                m_partOf.emplace(m_material, m_data.parts.size());
+                m_data.parts.push_back({m_material, {}});
+                m_part = &m_data.parts.back();
+            } else {
+                m_part = &m_data.parts[found->second];
+            }
+        }
+        triangulate(m_face, m_data.positions, m_part->corners, m_file, line);
+        ++m_data.faces;
+    }
+
+    void vertexData(std::string_view key, int line, const std::vector<std::string_view>& words) {
+        float values[7];
         if (key == "v") {
             // x y z, optionally w or a colour r g b.
-            numbers(words, 3, 7, "3 numbers (x y z)", file, line, values);
-            data.positions.emplace_back(values[0], values[1], values[2]);
+            numbers(words, 3, 7, "3 numbers (x y z)", m_file, line, values);
+            m_data.positions.emplace_back(values[0], values[1], values[2]);
         } else if (key == "vt") {
-            const std::size_t count = numbers(words, 1, 3, "1 to 3 numbers (u v)", file, line, values);
-            data.uvs.emplace_back(values[0], count > 1 ? values[1] : 0.0f);
-        } else if (key == "vn") {
-            numbers(words, 3, 3, "3 numbers (x y z)", file, line, values);
+            const std::size_t count = numbers(words, 1, 3, "1 to 3 numbers (u v)", m_file, line, values);
+            m_data.uvs.emplace_back(values[0], count > 1 ? values[1] : 0.0f);
+        } else {
+            numbers(words, 3, 3, "3 numbers (x y z)", m_file, line, values);
             // Divided by its largest component first, so that "vn 3e38 3e38 3e38"
             // (whose length overflows a float) still gives a unit normal.
             glm::vec3 normal(values[0], values[1], values[2]);
             const float largest = std::max({std::abs(normal.x), std::abs(normal.y), std::abs(normal.z)});
-            data.normals.push_back(largest > 0.0f ? glm::normalize(normal / largest) : glm::vec3(0.0f));
-        } else if (key == "l" || key == "p") {
-            // Lines and points are not drawn, but their indices are checked like a face's.
-            for (std::size_t i = 1; i < words.size(); ++i) {
-                (void)readCorner(words[i], static_cast<int>(data.positions.size()), static_cast<int>(data.uvs.size()),
-                                 static_cast<int>(data.normals.size()), file, line);
-            }
-        } else if (key == "mtllib") {
-            if (words.size() < 2) throw InputError(file, line, "mtllib needs the name of an MTL file");
-            if (words.size() > 2) {
-                throw InputError(file, line, "mtllib names " + std::to_string(words.size() - 1) +
-                                                 " files; put each MTL file on an mtllib line of its own "
-                                                 "(file names cannot contain spaces)");
-            }
-            const std::string name(words[1]);
-            if (loadedMtlFiles.count(name)) return;
-            const fs::path mtlPath = path.parent_path() / name;
-            std::string mtlText;
-            try {
-                mtlText = readMtl(mtlPath);
-            } catch (const InputError& error) {
-                throw InputError(file, line, "mtllib names '" + excerpt(name) + "', but " +
-                                                 quoteInput(mtlPath.string(), 200) + ": " + error.message() +
-                                                 " (MTL files are looked for next to the OBJ file)");
-            }
-            loadedMtlFiles.insert(name);
-            for (MtlEntry& entry : scanMtl(mtlPath, mtlText, warnings)) data.materials.push_back(std::move(entry));
-        } else if (key == "usemtl") {
-            std::string name = restOfLine(raw, "usemtl");
-            if (name.empty()) throw InputError(file, line, "usemtl needs a material name");
-            bool defined = false;
-            for (const MtlEntry& entry : data.materials) defined = defined || entry.name == name;
-            if (!defined) {
-                const std::string reason = loadedMtlFiles.empty() ? "no mtllib line comes before it"
-                                                                  : "no MTL file named by an earlier mtllib defines it";
-                throw InputError(file, line, "usemtl names material '" + quoteInput(name) + "', but " + reason);
-            }
-            if (name != material) {
-                material = std::move(name);
-                part = nullptr;
-            }
+            m_data.normals.push_back(largest > 0.0f ? glm::normalize(normal / largest) : glm::vec3(0.0f));
         }
-        // o, g, s, mg and statements Stoa does not use are skipped.
-    });
-    return data;
+    }
+
+    void mtllib(int line, const std::vector<std::string_view>& words) {
+        if (words.size() < 2) throw InputError(m_file, line, "mtllib needs the name of an MTL file");
+        if (words.size() > 2) {
+            throw InputError(m_file, line, "mtllib names " + std::to_string(words.size() - 1) +
+                                               " files; put each MTL file on an mtllib line of its own "
+                                               "(file names cannot contain spaces)");
+        }
+        const std::string name(words[1]);
+        if (m_loadedMtlFiles.count(name)) return;
+        const fs::path mtlPath = m_path.parent_path() / name;
+        std::string mtlText;
+        try {
+            mtlText = m_readMtl(mtlPath);
+        } catch (const InputError& error) {
+            throw InputError(m_file, line, "mtllib names '" + excerpt(name) + "', but " +
+                                               quoteInput(mtlPath.string(), 200) + ": " + error.message() +
+                                               " (MTL files are looked for next to the OBJ file)");
+        }
+        m_loadedMtlFiles.insert(name);
+        for (MtlEntry& entry : scanMtl(mtlPath, mtlText, m_warnings)) m_data.materials.push_back(std::move(entry));
+    }
+
+    void usemtl(int line, std::string_view raw) {
+        std::string name = restOfLine(raw, "usemtl");
+        if (name.empty()) throw InputError(m_file, line, "usemtl needs a material name");
+        bool defined = false;
+        for (const MtlEntry& entry : m_data.materials) defined = defined || entry.name == name;
+        if (!defined) {
+            const std::string reason = m_loadedMtlFiles.empty() ? "no mtllib line comes before it"
+                                                                : "no MTL file named by an earlier mtllib defines it";
+            throw InputError(m_file, line, "usemtl names material '" + quoteInput(name) + "', but " + reason);
+        }
+        if (name != m_material) {
+            m_material = std::move(name);
+            m_part = nullptr;
+        }
+    }
+
+    const fs::path& m_path;
+    const std::string m_file;
+    const MtlReader& m_readMtl;
+    std::ostream& m_warnings;
+    ObjData m_data;
+    std::set<std::string> m_loadedMtlFiles;   // each MTL file is read once
+    std::string m_material;                   // the current usemtl name; empty = none
+    std::map<std::string, std::size_t> m_partOf;
+    PartTriangles* m_part = nullptr;          // the part of `m_material`, made at its first face
+    std::vector<Corner> m_face;
+};
+
+ObjData readObj(const std::string& text, const fs::path& path, const MtlReader& readMtl, std::ostream& warnings) {
+    ObjReader reader(path, readMtl, warnings);
+    forEachLine(checkedText(text, path.string()),
+                [&](int line, std::string_view raw, std::vector<std::string_view>& words) {
+                    reader.statement(line, raw, words);
+                });
+    return reader.take();
 }
 
 /// Smooth normals per OBJ position: the positions become the vertices of a

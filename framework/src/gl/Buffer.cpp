@@ -40,7 +40,7 @@ void Buffer::upload(const void* data, std::size_t bytes, GLenum usage) {
     // draw call reads, unlike GL_ELEMENT_ARRAY_BUFFER (part of the bound VAO).
     STOA_GL_CALL(glBindBuffer(GL_COPY_WRITE_BUFFER, m_id));
     STOA_GL_CALL(glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(bytes), data, usage));
-    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    STOA_GL_CALL(glBindBuffer(GL_COPY_WRITE_BUFFER, 0));
     m_size = bytes;
 }
 
@@ -51,7 +51,7 @@ void Buffer::update(std::size_t offset, const void* data, std::size_t bytes) {
     STOA_GL_CALL(glBindBuffer(GL_COPY_WRITE_BUFFER, m_id));
     STOA_GL_CALL(glBufferSubData(GL_COPY_WRITE_BUFFER, static_cast<GLintptr>(offset),
                                  static_cast<GLsizeiptr>(bytes), data));
-    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    STOA_GL_CALL(glBindBuffer(GL_COPY_WRITE_BUFFER, 0));
 }
 
 void Buffer::bind() const {

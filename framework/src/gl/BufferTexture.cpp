@@ -1,11 +1,12 @@
 #include <stoa/gl/BufferTexture.hpp>
+#include <stoa/gl/Debug.hpp>
 
 #include <utility>
 
 namespace stoa {
 
 BufferTexture::BufferTexture(GLenum internalFormat) : m_buffer(GL_TEXTURE_BUFFER), m_format(internalFormat) {
-    glGenTextures(1, &m_texture);
+    STOA_GL_CALL(glGenTextures(1, &m_texture));
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     upload(zero, sizeof(zero));
 }
@@ -39,15 +40,15 @@ void BufferTexture::upload(const void* data, std::size_t bytes) {
     m_buffer.upload(data, bytes, GL_STREAM_DRAW);
     // Attaching again after glBufferData: some drivers keep the old storage otherwise.
     GLint previous = 0;
-    glGetIntegerv(GL_TEXTURE_BINDING_BUFFER, &previous);
-    glBindTexture(GL_TEXTURE_BUFFER, m_texture);
-    glTexBuffer(GL_TEXTURE_BUFFER, m_format, m_buffer.id());
-    glBindTexture(GL_TEXTURE_BUFFER, static_cast<GLuint>(previous));
+    STOA_GL_CALL(glGetIntegerv(GL_TEXTURE_BINDING_BUFFER, &previous));
+    STOA_GL_CALL(glBindTexture(GL_TEXTURE_BUFFER, m_texture));
+    STOA_GL_CALL(glTexBuffer(GL_TEXTURE_BUFFER, m_format, m_buffer.id()));
+    STOA_GL_CALL(glBindTexture(GL_TEXTURE_BUFFER, static_cast<GLuint>(previous)));
 }
 
 void BufferTexture::bind(int unit) const {
-    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-    glBindTexture(GL_TEXTURE_BUFFER, m_texture);
+    STOA_GL_CALL(glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit)));
+    STOA_GL_CALL(glBindTexture(GL_TEXTURE_BUFFER, m_texture));
 }
 
 } // namespace stoa

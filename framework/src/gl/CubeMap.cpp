@@ -26,7 +26,7 @@ CubeMap CubeMap::fromImages(const std::array<Image, 6>& faces, const std::string
                                           " channel(s)");
     }
     GLint previous = 0;
-    glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &previous);   // creation only, not in a pass
+    STOA_GL_CALL(glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &previous));   // creation only, not in a pass
     CubeMap cube;
     cube.m_size = size;
     STOA_GL_CALL(glGenTextures(1, &cube.m_id));

@@ -120,12 +120,12 @@ Framebuffer::Framebuffer(int width, int height, const FramebufferOptions& option
         STOA_GL_CALL(glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height));
         STOA_GL_CALL(glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                                                m_depthRenderbuffer));
-        glBindRenderbuffer(GL_RENDERBUFFER, 0);
+        STOA_GL_CALL(glBindRenderbuffer(GL_RENDERBUFFER, 0));
     }
 
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, previousDraw);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, previousRead);
+    STOA_GL_CALL(glBindFramebuffer(GL_DRAW_FRAMEBUFFER, previousDraw));
+    STOA_GL_CALL(glBindFramebuffer(GL_READ_FRAMEBUFFER, previousRead));
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         destroy();
         throw std::runtime_error("Framebuffer(" + std::to_string(width) + "x" + std::to_string(height) +
@@ -196,8 +196,8 @@ void Framebuffer::readPixels(int attachment, int x, int y, int width, int height
     bindForReading(depthRead ? -1 : attachment);
     STOA_GL_CALL(glPixelStorei(GL_PACK_ALIGNMENT, 1));
     STOA_GL_CALL(glReadPixels(x, y, width, height, format, type, out));
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    if (!depthRead && !m_colorTextures.empty()) glReadBuffer(GL_COLOR_ATTACHMENT0);
+    STOA_GL_CALL(glPixelStorei(GL_PACK_ALIGNMENT, 4));
+    if (!depthRead && !m_colorTextures.empty()) STOA_GL_CALL(glReadBuffer(GL_COLOR_ATTACHMENT0));
     StateCache::current().bindReadFramebuffer(previous);
 }
 

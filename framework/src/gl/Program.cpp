@@ -19,10 +19,10 @@ namespace {
 
 std::string programLog(GLuint program) {
     GLint length = 0;
-    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    STOA_GL_CALL(glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length));
     if (length <= 1) return "";
     std::string log(static_cast<std::size_t>(length), '\0');
-    glGetProgramInfoLog(program, length, nullptr, log.data());
+    STOA_GL_CALL(glGetProgramInfoLog(program, length, nullptr, log.data()));
     log.resize(std::min(log.find('\0'), log.size()));
     while (!log.empty() && (log.back() == '\n' || log.back() == ' ')) log.pop_back();
     return log;
@@ -67,7 +67,7 @@ Program Program::link(const std::vector<const ShaderSource*>& sources) {
     STOA_GL_CALL(glLinkProgram(program.m_id));
     for (const Shader& shader : shaders) STOA_GL_CALL(glDetachShader(program.m_id, shader.id()));
     GLint linked = GL_FALSE;
-    glGetProgramiv(program.m_id, GL_LINK_STATUS, &linked);
+    STOA_GL_CALL(glGetProgramiv(program.m_id, GL_LINK_STATUS, &linked));
     if (!linked) {
         std::string names;
         for (const ShaderSource* source : sources)

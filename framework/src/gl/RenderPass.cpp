@@ -25,17 +25,17 @@ void beginPass(const PassDescription& pass) {
         GLbitfield bits = 0;
         if (clear.color) {
             clearing.colorMask = ColorMask{};
-            glClearColor(clear.colorValue.r, clear.colorValue.g, clear.colorValue.b, clear.colorValue.a);
+            STOA_GL_CALL(glClearColor(clear.colorValue.r, clear.colorValue.g, clear.colorValue.b, clear.colorValue.a));
             bits |= GL_COLOR_BUFFER_BIT;
         }
         if (clear.depth) {
             clearing.depth.write = true;
-            glClearDepth(clear.depthValue);
+            STOA_GL_CALL(glClearDepth(clear.depthValue));
             bits |= GL_DEPTH_BUFFER_BIT;
         }
         if (clear.stencil) {
             clearing.stencil.writeMask = 0xFF;
-            glClearStencil(clear.stencilValue);
+            STOA_GL_CALL(glClearStencil(clear.stencilValue));
             bits |= GL_STENCIL_BUFFER_BIT;
         }
         cache.apply(clearing);

@@ -22,10 +22,10 @@ namespace {
 
 std::string infoLog(GLuint shader) {
     GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    STOA_GL_CALL(glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length));
     if (length <= 1) return "";
     std::string log(static_cast<std::size_t>(length), '\0');
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    STOA_GL_CALL(glGetShaderInfoLog(shader, length, nullptr, log.data()));
     log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
     return log;
 }
@@ -38,7 +38,7 @@ GLuint compile(GLenum stage, const std::string& text, std::string& log) {
     STOA_GL_CALL(glShaderSource(id, 1, &source, nullptr));
     STOA_GL_CALL(glCompileShader(id));
     GLint compiled = GL_FALSE;
-    glGetShaderiv(id, GL_COMPILE_STATUS, &compiled);
+    STOA_GL_CALL(glGetShaderiv(id, GL_COMPILE_STATUS, &compiled));
     if (compiled) return id;
     log = infoLog(id);
     glDeleteShader(id);

@@ -1,3 +1,4 @@
+#include <stoa/gl/GpuResources.hpp>
 #include <stoa/gl/StateCache.hpp>
 
 #include <stoa/gl/Debug.hpp>
@@ -8,14 +9,14 @@ namespace {
 
 void setEnabled(GLenum capability, bool on) {
     if (on)
-        glEnable(capability);
+        STOA_GL_CALL(glEnable(capability));
     else
-        glDisable(capability);
+        STOA_GL_CALL(glDisable(capability));
 }
 
 void applyCull(CullMode mode) {
     setEnabled(GL_CULL_FACE, mode != CullMode::None);
-    if (mode != CullMode::None) glCullFace(mode == CullMode::Back ? GL_BACK : GL_FRONT);
+    if (mode != CullMode::None) STOA_GL_CALL(glCullFace(mode == CullMode::Back ? GL_BACK : GL_FRONT));
 }
 
 void applyBlend(BlendMode mode) {
@@ -30,17 +31,14 @@ void applyBlend(BlendMode mode) {
 
 void applyStencil(const StencilState& stencil) {
     setEnabled(GL_STENCIL_TEST, stencil.test);
-    glStencilFunc(stencil.func, stencil.ref, stencil.readMask);
-    glStencilOp(stencil.stencilFail, stencil.depthFail, stencil.pass);
-    glStencilMask(stencil.writeMask);
+    STOA_GL_CALL(glStencilFunc(stencil.func, stencil.ref, stencil.readMask));
+    STOA_GL_CALL(glStencilOp(stencil.stencilFail, stencil.depthFail, stencil.pass));
+    STOA_GL_CALL(glStencilMask(stencil.writeMask));
 }
 
 } // namespace
 
-StateCache& StateCache::current() {
-    static StateCache cache;
-    return cache;
-}
+StateCache& StateCache::current() { return GpuResources::current().state(); }
 
 void StateCache::reset() {
     *this = StateCache();
@@ -68,13 +66,13 @@ void StateCache::update(T& known, const T& wanted, Set set) {
 void StateCache::apply(const RenderState& state) {
     update(m_state.depth, state.depth, [](const DepthState& depth) {
         setEnabled(GL_DEPTH_TEST, depth.test);
-        glDepthFunc(depth.func);
-        glDepthMask(depth.write ? GL_TRUE : GL_FALSE);
+        STOA_GL_CALL(glDepthFunc(depth.func));
+        STOA_GL_CALL(glDepthMask(depth.write ? GL_TRUE : GL_FALSE));
     });
     update(m_state.cull, state.cull, applyCull);
     update(m_state.blend, state.blend, applyBlend);
     update(m_state.colorMask, state.colorMask, [](const ColorMask& mask) {
-        glColorMask(mask.red, mask.green, mask.blue, mask.alpha);
+        STOA_GL_CALL(glColorMask(mask.red, mask.green, mask.blue, mask.alpha));
     });
     update(m_state.stencil, state.stencil, applyStencil);
     m_stateKnown = true;
@@ -95,7 +93,7 @@ void StateCache::useProgram(GLuint id) {
 GLuint StateCache::program() {
     if (!m_programKnown) {
         GLint id = 0;
-        glGetIntegerv(GL_CURRENT_PROGRAM, &id);
+        STOA_GL_CALL(glGetIntegerv(GL_CURRENT_PROGRAM, &id));
         m_program = static_cast<GLuint>(id);
         m_programKnown = true;
     }
@@ -127,8 +125,8 @@ void StateCache::bindReadFramebuffer(GLuint id) {
 GLuint StateCache::drawFramebuffer() {
     if (!m_framebuffersKnown) {
         GLint draw = 0, read = 0;
-        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
-        glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+        STOA_GL_CALL(glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw));
+        STOA_GL_CALL(glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read));
         m_drawFramebuffer = static_cast<GLuint>(draw);
         m_readFramebuffer = static_cast<GLuint>(read);
         m_framebuffersKnown = true;

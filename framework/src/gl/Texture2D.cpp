@@ -114,7 +114,7 @@ Texture2D Texture2D::fromImage(const Image& image, const TextureOptions& options
     STOA_GL_CALL(glPixelStorei(GL_UNPACK_ALIGNMENT, 1)); // rows of 3-channel images are not 4-byte aligned
     STOA_GL_CALL(glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(format.internalFormat), image.width(),
                               image.height(), 0, format.format, GL_UNSIGNED_BYTE, bottomUp.data()));
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    STOA_GL_CALL(glPixelStorei(GL_UNPACK_ALIGNMENT, 4));
     if (image.channels() <= 2) {
         // Grey images read as grey: r into r, g and b; alpha from g (or 1).
         const GLint alpha = image.channels() == 2 ? GL_GREEN : GL_ONE;

@@ -1,3 +1,4 @@
+#include <stoa/gl/GpuResources.hpp>
 #include <stoa/gl/TextureCache.hpp>
 
 namespace stoa {
@@ -19,9 +20,6 @@ int TextureCache::aliveCount() const {
     return alive;
 }
 
-TextureCache& TextureCache::shared() {
-    static TextureCache cache;
-    return cache;
-}
+TextureCache& TextureCache::shared() { return GpuResources::current().textures(); }
 
 } // namespace stoa

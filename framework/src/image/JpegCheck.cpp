@@ -46,6 +46,10 @@ private:
     void readHuffmanTables(std::size_t at, std::size_t end);
     void readFrame(std::size_t at, std::size_t end, bool progressive);
     std::size_t walkScan(std::size_t at, std::size_t end);
+    std::vector<Component> scanComponents(std::size_t at, std::size_t end) const;
+    long long unitCount(std::vector<Component>& scan) const;
+    void skipBlock(const Component& component, long long mcu, long long mcus);
+    [[noreturn]] void ranOut(long long mcu, long long mcus) const;
     std::size_t nextMarker(std::size_t at, unsigned long long* dataBytes) const;
 
     // The bit reader of a sequential scan.
@@ -182,8 +186,8 @@ std::size_t JpegWalk::nextMarker(std::size_t at, unsigned long long* dataBytes) 
     return at;
 }
 
-std::size_t JpegWalk::walkScan(std::size_t at, std::size_t end) {
-    ++m_scans;
+/// The components a scan header names, with the Huffman tables it picks for each.
+std::vector<Component> JpegWalk::scanComponents(std::size_t at, std::size_t end) const {
     if (!m_frame) fail("the JPG has image data (SOS) before its frame header (SOF)");
     if (end - at < 1) fail("the JPG's scan header is too short");
     const std::size_t count = m_bytes[at];
@@ -208,6 +212,54 @@ std::size_t JpegWalk::walkScan(std::size_t at, std::size_t end) {
         if (component.dcTable > 3 || component.acTable > 3) fail("the JPG's scan names a Huffman table past 3");
         scan.push_back(component);
     }
+    return scan;
+}
+
+/// How many units (MCUs) a baseline scan of `scan` codes; a non-interleaved
+/// scan codes one block per unit, so its component's h and v become 1.
+long long JpegWalk::unitCount(std::vector<Component>& scan) const {
+    if (scan.size() == 1) {
+        const Component& c = scan[0];
+        const long long width = (static_cast<long long>(m_width) * c.h + m_maxH - 1) / m_maxH;
+        const long long height = (static_cast<long long>(m_height) * c.v + m_maxV - 1) / m_maxV;
+        scan[0].h = scan[0].v = 1;
+        return ((width + 7) / 8) * ((height + 7) / 8);
+    }
+    return static_cast<long long>((m_width + 8 * m_maxH - 1) / (8 * m_maxH)) *
+           ((m_height + 8 * m_maxV - 1) / (8 * m_maxV));
+}
+
+void JpegWalk::ranOut(long long mcu, long long mcus) const {
+    fail("the JPG's image data ends after " + std::to_string(mcu) + " of the " + std::to_string(mcus) +
+         " blocks (MCUs) its " + std::to_string(m_width) + "x" + std::to_string(m_height) +
+         " header promises: the file is truncated, or its header was altered");
+}
+
+/// One 8x8 block's Huffman codes, read and skipped: its DC difference, then AC
+/// run/size pairs up to the end of the block.
+void JpegWalk::skipBlock(const Component& component, long long mcu, long long mcus) {
+    const int dc = decode(m_dc[component.dcTable]);
+    if (dc == -1) ranOut(mcu, mcus);
+    if (dc < 0 || dc > 15) fail("the JPG's image data is damaged (an invalid Huffman code)");
+    if (!skipBits(dc)) ranOut(mcu, mcus);
+    for (int k = 1; k < 64;) {
+        const int symbol = decode(m_ac[component.acTable]);
+        if (symbol == -1) ranOut(mcu, mcus);
+        if (symbol < 0) fail("the JPG's image data is damaged (an invalid Huffman code)");
+        const int run = symbol >> 4, size = symbol & 15;
+        if (size == 0) {
+            if (run != 15) break;  // end of block
+            k += 16;
+            continue;
+        }
+        if (!skipBits(size)) ranOut(mcu, mcus);
+        k += run + 1;
+    }
+}
+
+std::size_t JpegWalk::walkScan(std::size_t at, std::size_t end) {
+    ++m_scans;
+    std::vector<Component> scan = scanComponents(at, end);
     if (m_progressive) return nextMarker(end, &m_progressiveBytes);
 
     for (const Component& component : scan) {
@@ -215,24 +267,9 @@ std::size_t JpegWalk::walkScan(std::size_t at, std::size_t end) {
             fail("the JPG's scan uses a Huffman table it never defines");
         }
     }
-    long long mcus = 0;
-    if (count == 1) {
-        const Component& c = scan[0];
-        const long long width = (static_cast<long long>(m_width) * c.h + m_maxH - 1) / m_maxH;
-        const long long height = (static_cast<long long>(m_height) * c.v + m_maxV - 1) / m_maxV;
-        mcus = ((width + 7) / 8) * ((height + 7) / 8);
-        scan[0].h = scan[0].v = 1;  // a non-interleaved scan codes one block per unit
-    } else {
-        mcus = static_cast<long long>((m_width + 8 * m_maxH - 1) / (8 * m_maxH)) *
-               ((m_height + 8 * m_maxV - 1) / (8 * m_maxV));
-    }
+    const long long mcus = unitCount(scan);
     m_at = end;
     m_bitsLeft = 0;
-    auto ranOut = [&](long long mcu) {
-        fail("the JPG's image data ends after " + std::to_string(mcu) + " of the " + std::to_string(mcus) +
-             " blocks (MCUs) its " + std::to_string(m_width) + "x" + std::to_string(m_height) +
-             " header promises: the file is truncated, or its header was altered");
-    };
     for (long long mcu = 0; mcu < mcus; ++mcu) {
         if (m_restartInterval && mcu > 0 && mcu % m_restartInterval == 0) {
             m_bitsLeft = 0;
@@ -240,27 +277,8 @@ std::size_t JpegWalk::walkScan(std::size_t at, std::size_t end) {
                 m_at += 2;
             }
         }
-        for (const Component& component : scan) {
-            for (int block = 0; block < component.h * component.v; ++block) {
-                const int dc = decode(m_dc[component.dcTable]);
-                if (dc == -1) ranOut(mcu);
-                if (dc < 0 || dc > 15) fail("the JPG's image data is damaged (an invalid Huffman code)");
-                if (!skipBits(dc)) ranOut(mcu);
-                for (int k = 1; k < 64;) {
-                    const int symbol = decode(m_ac[component.acTable]);
-                    if (symbol == -1) ranOut(mcu);
-                    if (symbol < 0) fail("the JPG's image data is damaged (an invalid Huffman code)");
-                    const int run = symbol >> 4, size = symbol & 15;
-                    if (size == 0) {
-                        if (run != 15) break;  // end of block
-                        k += 16;
-                        continue;
-                    }
-                    if (!skipBits(size)) ranOut(mcu);
-                    k += run + 1;
-                }
-            }
-        }
+        for (const Component& component : scan)
+            for (int block = 0; block < component.h * component.v; ++block) skipBlock(component, mcu, mcus);
     }
     return nextMarker(m_at, nullptr);
 }

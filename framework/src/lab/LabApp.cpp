@@ -11,13 +11,9 @@
 #include <stoa/gl/Program.hpp>
 #include <stoa/lab/LabApp.hpp>
 
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <vector>
-
-#include <unistd.h>
 
 namespace stoa {
 
@@ -37,8 +33,53 @@ Program& LabResources::loadProgram(const std::string& vertexFile, const std::str
     return *m_programs.back();
 }
 
-int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv) {
+namespace {
+
+// What a run does with its manifest: list, check, render headless or open the window.
+int runOnManifest(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, const Options& options, int argc,
+                  char** argv) {
+    if (!manifest.lab.empty() && manifest.lab != info.name)
+        throw InputError(manifest.file, 0, "these are the cases of lab " + manifest.lab + ", not of lab " + info.name);
+    if (options.list || options.listChecks) {
+        for (const CaseSpec& spec : manifest.cases)
+            if (spec.check.empty() == options.list) std::printf("%s\n", spec.name.c_str());
+        return kExitOk;
+    }
+    if (!options.check.empty()) return runChecks(lab, info, manifest, options);
+    if (!options.renderCase.empty() && !manifest.find(options.renderCase)) {
+        std::fprintf(stderr, "lab%s: no case '%s' (cases: %s)\n", info.name, options.renderCase.c_str(),
+                     manifest.caseNames().c_str());
+        return kExitUsage;
+    }
+    if (!options.renderCase.empty()) return renderHeadless(lab, info, manifest, options);
+    return runWindow(lab, info, manifest, options, argc, argv);
+}
+
+// Runs `body`, turning a stub, bad input or any other failure into its message
+// and the exit status the grader reads (LabProtocol.hpp).
+template <typename Body>
+int reportingFailures(const LabBuildInfo& info, Body&& body) {
     try {
+        return body();
+    } catch (const NotImplemented& stub) {
+        std::fprintf(stderr, "%s\n", notImplementedLine(stub.describe(info.name)).c_str());
+        return kExitNotAttempted;
+    } catch (const ShaderNotImplemented& stub) {
+        std::fprintf(stderr, "%s\n", notImplementedLine(stub.what()).c_str());
+        return kExitNotAttempted;
+    } catch (const InputError& error) {
+        std::fprintf(stderr, "lab%s: %s\n", info.name, error.what());
+        return kExitError;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "lab%s: %s\n", info.name, error.what());
+        return kExitError;
+    }
+}
+
+} // namespace
+
+int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv) {
+    return reportingFailures(info, [&]() -> int {
         Options options;
         try {
             options = parseOptions(argc, argv);
@@ -56,56 +97,19 @@ int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv) {
             return kExitOk;
         }
         // --cases replaces the lab's manifest (it does not add to it): the grader
-        // renders each hidden case with the hidden manifest it lives in.
+        // passes the manifest it planned each case from.
         const LabManifest manifest = loadManifest(options.casesFile.empty()
                                                       ? std::filesystem::path(info.labDirectory) / "cases.ini"
                                                       : std::filesystem::path(options.casesFile));
-        if (!manifest.lab.empty() && manifest.lab != info.name)
-            throw InputError(manifest.file, 0, "these are the cases of lab " + manifest.lab + ", not of lab " + info.name);
-        if (options.list || options.listChecks) {
-            for (const CaseSpec& spec : manifest.cases)
-                if (spec.check.empty() == options.list) std::printf("%s\n", spec.name.c_str());
-            return kExitOk;
-        }
-        if (!options.check.empty()) return runChecks(lab, info, manifest, options);
-        if (!options.renderCase.empty() && !manifest.find(options.renderCase)) {
-            std::fprintf(stderr, "lab%s: no case '%s' (cases: %s)\n", info.name, options.renderCase.c_str(),
-                         manifest.caseNames().c_str());
-            return kExitUsage;
-        }
-        if (!options.renderCase.empty()) return renderHeadless(lab, info, manifest, options);
-        return runWindow(lab, info, manifest, options, argc, argv);
-    } catch (const NotImplemented& stub) {
-        std::fprintf(stderr, "%s\n", notImplementedLine(stub.describe(info.name)).c_str());
-        return kExitNotAttempted;
-    } catch (const ShaderNotImplemented& stub) {
-        std::fprintf(stderr, "%s\n", notImplementedLine(stub.what()).c_str());
-        return kExitNotAttempted;
-    } catch (const InputError& error) {
-        std::fprintf(stderr, "lab%s: %s\n", info.name, error.what());
-        return kExitError;
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "lab%s: %s\n", info.name, error.what());
-        return kExitError;
-    }
+        return runOnManifest(lab, info, manifest, options, argc, argv);
+    });
 }
 
 int runLabOnCase(Lab& lab, const LabBuildInfo& info, const std::string& program, const std::string& cases,
                  const std::string& caseName, const std::vector<std::string>& options) {
-    std::string file = "/tmp/" + std::filesystem::path(program).filename().string() + "-XXXXXX";
-    const int fd = mkstemp(file.data());
-    if (fd < 0) {
-        std::fprintf(stderr, "%s: cannot write a temporary cases file in /tmp: %s\n", program.c_str(), std::strerror(errno));
-        return kExitError;
-    }
-    const bool written = write(fd, cases.data(), cases.size()) == static_cast<ssize_t>(cases.size());
-    close(fd);
-    if (!written) {
-        std::fprintf(stderr, "%s: cannot write the temporary cases file %s\n", program.c_str(), file.c_str());
-        std::remove(file.c_str());
-        return kExitError;
-    }
-    std::vector<std::string> args{program, "--cases", file};
+    // The tool's flags, as the lab's command line spells them (argv also goes
+    // to the window toolkit).
+    std::vector<std::string> args{program};
     bool render = false;
     for (std::size_t i = 0; i < options.size(); ++i) {
         if (options[i] == "--render" && i + 1 < options.size()) {
@@ -119,9 +123,12 @@ int runLabOnCase(Lab& lab, const LabBuildInfo& info, const std::string& program,
     std::vector<char*> argv;
     for (std::string& arg : args) argv.push_back(arg.data());
     argv.push_back(nullptr);
-    const int status = runLab(lab, info, static_cast<int>(args.size()), argv.data());
-    std::remove(file.c_str());
-    return status;
+    const int argc = static_cast<int>(args.size());
+    return reportingFailures(info, [&]() -> int {
+        const Options parsed = parseOptions(argc, argv.data());
+        const LabManifest manifest = parseManifest(cases, std::filesystem::path(program).filename().string() + "'s case");
+        return runOnManifest(lab, info, manifest, parsed, argc, argv.data());
+    });
 }
 
 } // namespace stoa

@@ -263,9 +263,9 @@ private:
         }
         const Texture2D& picture =
             m_view == View::Yours ? m_yours : m_view == View::Reference ? m_reference : m_difference;
-        glViewport(0, 0, size.x, size.y);
-        glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        STOA_GL_CALL(glViewport(0, 0, size.x, size.y));
+        STOA_GL_CALL(glClearColor(0.1f, 0.1f, 0.1f, 1.0f));
+        STOA_GL_CALL(glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT));
         if (picture.id() == 0) return;   // a difference of pictures of different sizes
         const float scale = std::min(static_cast<float>(size.x) / picture.width(),
                                      static_cast<float>(size.y) / picture.height());
@@ -293,8 +293,8 @@ private:
     }
 
     void showProblem(const std::string& problem) {
-        glClearColor(0.25f, 0.05f, 0.05f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        STOA_GL_CALL(glClearColor(0.25f, 0.05f, 0.05f, 1.0f));
+        STOA_GL_CALL(glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT));
         setStatus(problem);
         if (!m_screenshot.empty()) m_exitCode = kExitNotAttempted;
     }
@@ -335,9 +335,9 @@ private:
 
     static void saveScreenshot(glm::ivec2 size, const std::string& file) {
         Image image(size.x, size.y, 4);
-        glReadBuffer(GL_BACK);
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+        STOA_GL_CALL(glReadBuffer(GL_BACK));
+        STOA_GL_CALL(glPixelStorei(GL_PACK_ALIGNMENT, 1));
+        STOA_GL_CALL(glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, image.data()));
         image.flipVertically();
         image.savePng(file);
     }

@@ -1,3 +1,4 @@
+#include <stoa/gl/Debug.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/RenderPass.hpp>
 #include <stoa/render/AmbientOcclusion.hpp>
@@ -36,8 +37,8 @@ void AmbientOcclusionPass::setKernel(const std::vector<glm::vec3>& kernel, const
     options.wrap = GL_REPEAT;
     m_noise = std::make_unique<Texture2D>(Texture2D::empty(4, 4, GL_RGB32F, options));
     m_noise->bind(kNoiseUnit);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, 4, GL_RGB, GL_FLOAT, noise.data());
+    STOA_GL_CALL(glPixelStorei(GL_UNPACK_ALIGNMENT, 4));
+    STOA_GL_CALL(glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, 4, GL_RGB, GL_FLOAT, noise.data()));
 }
 
 void AmbientOcclusionPass::prepareTargets(glm::ivec2 size) {
@@ -60,7 +61,7 @@ void AmbientOcclusionPass::occlusion(const DeferredRenderer& renderer, glm::ivec
     m_occlusionProgram.set("uKernelSize", static_cast<int>(m_kernel.size()));
     m_occlusionProgram.set("uRadius", settings.radius);
     m_occlusionProgram.set("uBias", settings.bias);
-    glUniform3fv(m_occlusionProgram.uniformLocation("uKernel"), static_cast<GLsizei>(m_kernel.size()), &m_kernel[0].x);
+    STOA_GL_CALL(glUniform3fv(m_occlusionProgram.uniformLocation("uKernel"), static_cast<GLsizei>(m_kernel.size()), &m_kernel[0].x));
     m_overlay.draw(m_occlusionProgram, {0, 0, size.x, size.y});
 }
 

@@ -1,3 +1,4 @@
+#include <stoa/gl/Debug.hpp>
 #include <stoa/render/CourseRenderer.hpp>
 
 #include <stoa/camera/Camera.hpp>
@@ -107,7 +108,7 @@ CourseRenderer::CourseRenderer(const CoursePrograms& programs)
 CourseRenderer::~CourseRenderer() = default;
 
 void CourseRenderer::endPass(CoursePass pass, bool timed) {
-    if (timed) glFinish();
+    if (timed) STOA_GL_CALL(glFinish());
     const double end = now();
     m_stats.seconds[static_cast<std::size_t>(pass)] += end - m_passStart;
     m_passStart = end;
@@ -118,7 +119,7 @@ void CourseRenderer::render(const std::vector<CourseItem>& items, const CourseLi
                             const GlowPass& glow) {
     const GLuint output = StateCache::current().drawFramebuffer();
     const bool timed = settings.timePasses;
-    if (timed) glFinish();   // what the caller drew before is not ours
+    if (timed) STOA_GL_CALL(glFinish());   // what the caller drew before is not ours
     const double start = now();
     m_passStart = start;
     m_stats = CourseStats{};
@@ -178,8 +179,8 @@ void CourseRenderer::render(const std::vector<CourseItem>& items, const CourseLi
             m_programs.grey->set("uImage", kSkyUnit);
             m_overlay.draw(*m_programs.grey, {0, 0, size.x, size.y});
         } else {
-            glClearColor(1.0f, 1.0f, 1.0f, 1.0f);   // no occlusion: everything fully open
-            glClear(GL_COLOR_BUFFER_BIT);
+            STOA_GL_CALL(glClearColor(1.0f, 1.0f, 1.0f, 1.0f));   // no occlusion: everything fully open
+            STOA_GL_CALL(glClear(GL_COLOR_BUFFER_BIT));
         }
     }
     if (settings.view == CourseView::Ids) drawIds(items, size, output);
@@ -222,33 +223,21 @@ void CourseRenderer::cull(const std::vector<CourseItem>& items, const Camera& ca
 void CourseRenderer::renderCascades(const std::vector<CourseItem>& items, const CourseLighting& lighting,
                                     const Camera& camera, glm::ivec2 size, const CourseSettings& settings,
                                     const CourseCrowd* crowd) {
-    m_cascadeCount = 0;
+    m_cascades.clear();
     const ShadowFunctions& code = studentCode().shadows;
     const CullingFunctions& culling = studentCode().culling;
     if (!settings.shadows || !code.cascadeSplits || !code.frustumSliceCorners || !code.cascadeLightMatrix) return;
-    const int count = std::min(std::max(settings.cascades, 1), ShadowRenderer::kMaxCascades);
+    const int count = std::min(std::max(settings.cascades, 1), ShadowCascades::kMaxCascades);
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     const float far = std::min(settings.shadowFar, camera.farPlane());
-    m_splits = code.cascadeSplits(camera.nearPlane(), far, count, kCascadeLambda);   // the student's
-    STOA_ASSERT(m_splits.size() == static_cast<std::size_t>(count) + 1,
-                "cascadeSplits(): must return count + 1 depths, near first and far last");
+    m_cascades.split(camera, far, count, kCascadeLambda);
 
     const GLuint previous = StateCache::current().drawFramebuffer();
-    const glm::mat4 view = camera.viewMatrix();
     for (int i = 0; i < count; ++i) {
-        const auto cascade = static_cast<std::size_t>(i);
-        const std::array<glm::vec3, 8> corners =
-            code.frustumSliceCorners(view, camera.fovYDegrees(), aspect, m_splits[cascade], m_splits[cascade + 1]);
-        const glm::mat4 matrix = code.cascadeLightMatrix(lighting.sunDirection, corners, settings.shadowMapSize,
-                                                         lighting.sceneMin, lighting.sceneMax);
-        m_cascadeMatrices[cascade] = matrix;
-        if (m_cascadeMaps[cascade].width() != settings.shadowMapSize) {
-            FramebufferOptions options;
-            options.color = false;
-            options.depthTexture = true;
-            m_cascadeMaps[cascade] = Framebuffer(settings.shadowMapSize, settings.shadowMapSize, options);
-        }
-        PassDescription pass = passInto(m_cascadeMaps[cascade]);
+        Framebuffer& map = m_cascades.fit(i, camera, aspect, lighting.sunDirection, settings.shadowMapSize,
+                                          lighting.sceneMin, lighting.sceneMax);
+        const glm::mat4& matrix = m_cascades.matrix(i);
+        PassDescription pass = passInto(map);
         pass.clear.depth = true;
         pass.state.cull = CullMode::None;   // open meshes (the floor, the wall's ends) cast from both sides
         beginPass(pass);
@@ -273,7 +262,6 @@ void CourseRenderer::renderCascades(const std::vector<CourseItem>& items, const 
             crowd->renderer->drawAgentsWith(*crowd->simulation, *m_programs.agentsDepth, crowd->options);
         }
     }
-    m_cascadeCount = count;
     StateCache::current().bindFramebuffer(previous);
 }
 
@@ -328,20 +316,9 @@ void CourseRenderer::drawSun(const CourseLighting& lighting, const Camera& camer
     program.set("uSunDirectionWorld", glm::normalize(lighting.sunDirection));
     program.set("uSunColor", lighting.sunColor);
     program.set("uShininess", kShininess);
-    glm::vec4 splitFar(camera.farPlane());
-    for (int i = 0; i < ShadowRenderer::kMaxCascades; ++i) {
-        const auto cascade = static_cast<std::size_t>(i);
-        const std::string index = "[" + std::to_string(i) + "]";
-        program.set("uCascadeMaps" + index, kFirstCascadeUnit + i);   // every sampler its own unit, used or not
-        if (i >= m_cascadeCount) continue;
-        splitFar[i] = m_splits[cascade + 1];
-        m_cascadeMaps[cascade].bindDepthTexture(kFirstCascadeUnit + i);
-        program.set("uCascadeMatrices" + index, m_cascadeMatrices[cascade]);
-        program.set("uCascadeBiases" + index, cascadeDepthBias(m_cascadeMatrices[cascade], settings.shadowMapSize));
-    }
-    program.set("uCascadeSplits", splitFar);
-    program.set("uCascadeCount", std::max(m_cascadeCount, 1));
-    program.set("uShadowsEnabled", m_cascadeCount > 0);
+    m_cascades.setUniforms(program, kFirstCascadeUnit, settings.shadowMapSize, camera.farPlane(), true);
+    program.set("uCascadeCount", std::max(m_cascades.count(), 1));
+    program.set("uShadowsEnabled", m_cascades.count() > 0);
     program.set("uPcfMode", static_cast<int>(settings.pcf));
     program.set("uCascadeColors", cascadeView);
     m_overlay.draw(program, {0, 0, size.x, size.y}, state);   // into the light buffer, bound by the caller
@@ -381,7 +358,7 @@ void CourseRenderer::drawIds(const std::vector<CourseItem>& items, glm::ivec2 si
     pass.state.cull = CullMode::None;
     beginPass(pass);
     const GLuint background[4] = {0, 0, 0, 0};
-    glClearBufferuiv(GL_COLOR, 0, background);   // an integer target clears with its own call
+    STOA_GL_CALL(glClearBufferuiv(GL_COLOR, 0, background));   // an integer target clears with its own call
     const Program& ids = *m_programs.ids;
     ids.use();
     for (std::size_t i = 0; i < items.size(); ++i) {

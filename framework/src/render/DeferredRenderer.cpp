@@ -2,6 +2,7 @@
 #include <stoa/core/Assert.hpp>
 #include <stoa/core/StudentCode.hpp>
 #include <stoa/geometry/Shapes.hpp>
+#include <stoa/gl/Debug.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/RenderPass.hpp>
 #include <stoa/gl/StateCache.hpp>
@@ -184,10 +185,10 @@ void DeferredRenderer::render(const DrawList& items, const std::vector<PointLigh
 }
 
 void DeferredRenderer::copyDepthToLightBuffer() {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_gBuffer.target().id());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_lightBuffer.id());
-    glBlitFramebuffer(0, 0, m_size.x, m_size.y, 0, 0, m_size.x, m_size.y, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT,
-                      GL_NEAREST);
+    STOA_GL_CALL(glBindFramebuffer(GL_READ_FRAMEBUFFER, m_gBuffer.target().id()));
+    STOA_GL_CALL(glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_lightBuffer.id()));
+    STOA_GL_CALL(glBlitFramebuffer(0, 0, m_size.x, m_size.y, 0, 0, m_size.x, m_size.y, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT,
+                      GL_NEAREST));
     StateCache::current().forget();
 }
 

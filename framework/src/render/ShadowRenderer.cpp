@@ -88,21 +88,6 @@ void ShadowRenderer::drawMapView(const Framebuffer& map, const ShadowLight& ligh
     m_overlay.draw(m_mapViewProgram, rectangle);
 }
 
-// The bias (slope factor, minimum, maximum) in shadow-map texels of world size:
-// the 1024^2 sun map of the single-map cases spends about 0.04 m per texel and
-// uses kSunBias = (0.004, 0.001, 0.015) of a 40 m depth range, i.e. these.
-static constexpr glm::vec3 kCascadeBiasTexels{4.0f, 1.0f, 15.0f};
-
-// Its matrix is an orthographic projection times a rotation, so the length of
-// row 0 is 2 / (box width) and that of row 2 is 2 / (depth range).
-glm::vec3 cascadeDepthBias(const glm::mat4& matrix, int mapSize) {
-    const float rowX = glm::length(glm::vec3(matrix[0][0], matrix[1][0], matrix[2][0]));
-    const float rowZ = glm::length(glm::vec3(matrix[0][2], matrix[1][2], matrix[2][2]));
-    const float texelWorld = 2.0f / (rowX * static_cast<float>(mapSize));
-    const float depthRange = 2.0f / rowZ;
-    return kCascadeBiasTexels * (texelWorld / depthRange);
-}
-
 void ShadowRenderer::renderCascaded(const Scene& scene, const Camera& camera, glm::ivec2 size,
                                     const ShadowLight& light, const ShadowSettings& settings) {
     const int count = settings.cascades.count;
@@ -114,45 +99,19 @@ void ShadowRenderer::renderCascaded(const Scene& scene, const Camera& camera, gl
     const glm::vec3 sunDirection = scene.directionalLights.front().direction;
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     const float far = std::min(settings.cascades.far, camera.farPlane());
-    const ShadowFunctions& code = studentCode().shadows;
-    m_splits = code.cascadeSplits(camera.nearPlane(), far, count, settings.cascades.lambda);
-    STOA_ASSERT(m_splits.size() == static_cast<std::size_t>(count) + 1,
-                "cascadeSplits(): must return count + 1 depths, near first and far last");
+    m_cascades.split(camera, far, count, settings.cascades.lambda);
 
-    const glm::mat4 view = camera.viewMatrix();
     const bool withMaps = settings.enabled || settings.showMap;
     const GLuint previous = StateCache::current().drawFramebuffer();
     for (int i = 0; i < count && withMaps; ++i) {
-        const auto cascade = static_cast<std::size_t>(i);
-        const std::array<glm::vec3, 8> corners =
-            code.frustumSliceCorners(view, camera.fovYDegrees(), aspect, m_splits[cascade], m_splits[cascade + 1]);
-        m_cascadeMatrices[cascade] =
-            code.cascadeLightMatrix(sunDirection, corners, settings.mapSize, light.sceneMin, light.sceneMax);
-        if (m_cascadeMaps[cascade].width() != settings.mapSize) {
-            FramebufferOptions options;
-            options.color = false;
-            options.depthTexture = true;
-            m_cascadeMaps[cascade] = Framebuffer(settings.mapSize, settings.mapSize, options);
-        }
-        code.renderShadowPass(scene, m_cascadeMaps[cascade], m_depthProgram, m_cascadeMatrices[cascade]);
+        Framebuffer& map =
+            m_cascades.fit(i, camera, aspect, sunDirection, settings.mapSize, light.sceneMin, light.sceneMax);
+        studentCode().shadows.renderShadowPass(scene, map, m_depthProgram, m_cascades.matrix(i));
     }
     afterStudentPass(previous);
 
     const Program& program = *m_cascadeProgram;
-    glm::vec4 splitFar(far);
-    for (int i = 0; i < count; ++i) {
-        const auto cascade = static_cast<std::size_t>(i);
-        const std::string index = "[" + std::to_string(i) + "]";
-        splitFar[i] = m_splits[cascade + 1];
-        if (settings.enabled) m_cascadeMaps[cascade].bindDepthTexture(kFirstCascadeUnit + i);
-        program.set("uCascadeMaps" + index, kFirstCascadeUnit + i);
-        program.set("uCascadeMatrices" + index, m_cascadeMatrices[cascade]);
-        program.set("uCascadeBiases" + index, cascadeDepthBias(m_cascadeMatrices[cascade], settings.mapSize));
-    }
-    // Units of the cascades a case does not use still need a sampler2D's unit.
-    for (int i = count; i < kMaxCascades; ++i)
-        program.set("uCascadeMaps[" + std::to_string(i) + "]", kFirstCascadeUnit + i);
-    program.set("uCascadeSplits", splitFar);
+    m_cascades.setUniforms(program, kFirstCascadeUnit, settings.mapSize, far, settings.enabled);
     program.set("uCascadeCount", count);
     program.set("uShadowsEnabled", settings.enabled);
     program.set("uPcfMode", static_cast<int>(settings.pcf));
@@ -164,8 +123,7 @@ void ShadowRenderer::renderCascaded(const Scene& scene, const Camera& camera, gl
         // The cascades side by side along the bottom, near to far from the left.
         const int side = std::max(1, std::min(size.x / (count + 1), size.y / 3));
         for (int i = 0; i < count; ++i)
-            drawMapView(m_cascadeMaps[static_cast<std::size_t>(i)], light,
-                        {size.x - (count - i) * (side + 4) - 4, 8, side, side});
+            drawMapView(m_cascades.map(i), light, {size.x - (count - i) * (side + 4) - 4, 8, side, side});
     }
 }
 

@@ -1,4 +1,5 @@
 #include <stoa/core/Assert.hpp>
+#include <stoa/gl/Debug.hpp>
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/RenderPass.hpp>
@@ -18,7 +19,7 @@ void TextureOverlay::draw(const Program& program, const glm::ivec4& rectangle, c
     program.use();
     // Core profile draws need a bound vertex array even without attributes.
     m_vertexArray.bind();
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    STOA_GL_CALL(glDrawArrays(GL_TRIANGLE_STRIP, 0, 4));
 }
 
 } // namespace stoa

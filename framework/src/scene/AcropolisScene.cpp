@@ -4,6 +4,7 @@
 #include <stoa/core/Paths.hpp>
 #include <stoa/geometry/Shapes.hpp>
 #include <stoa/gl/GpuMesh.hpp>
+#include <stoa/gl/GpuResources.hpp>
 #include <stoa/scene/MeshObject.hpp>
 
 #include <glm/common.hpp>
@@ -60,12 +61,16 @@ const Mesh& pedestalMesh() {
 }
 const Material& pedestalMaterial() { return acropolisModel("column.obj").parts.front().material; }
 
-// Meshes uploaded without a filter, shared by every build while some scene
-// still draws them. Weak, so that once the last scene lets go (for instance
-// before its context is destroyed) the next build uploads afresh.
+// Meshes uploaded without a filter, shared by every build in this context
+// while some scene still draws them. Weak, so that once the last scene lets go
+// the next build uploads afresh; one map per context (GpuResources), so that a
+// new context never draws a mesh of the last one.
+struct UploadedMeshes {
+    std::map<std::string, std::weak_ptr<const GpuMesh>> byName;
+};
+
 std::map<std::string, std::weak_ptr<const GpuMesh>>& uploadedMeshes() {
-    static std::map<std::string, std::weak_ptr<const GpuMesh>> cache;
-    return cache;
+    return GpuResources::current().cache<UploadedMeshes>().byName;
 }
 
 std::size_t& uploads() {

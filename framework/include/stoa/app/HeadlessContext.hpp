@@ -22,6 +22,8 @@
 
 namespace stoa {
 
+class GpuResources;
+
 namespace detail {
 class HeadlessState; // the backend's handles (OSMesa or EGL), defined in HeadlessContext.cpp
 }
@@ -71,6 +73,7 @@ public:
 private:
     HeadlessBackend m_backend;
     std::unique_ptr<detail::HeadlessState> m_state;
+    std::unique_ptr<GpuResources> m_resources;   // the context's caches (stoa/gl/GpuResources.hpp)
 };
 
 } // namespace stoa

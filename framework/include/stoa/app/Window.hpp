@@ -14,6 +14,8 @@
 
 namespace stoa {
 
+class GpuResources;
+
 /// What a window reports to. Every callback has a default that does nothing.
 class WindowHandler {
 public:
@@ -63,6 +65,7 @@ public:
 
 private:
     std::unique_ptr<State> m_state;
+    std::unique_ptr<GpuResources> m_resources;   // the context's caches (stoa/gl/GpuResources.hpp)
 };
 
 } // namespace stoa

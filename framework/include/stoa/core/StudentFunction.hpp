@@ -12,6 +12,7 @@
 #include <stoa/core/NotImplemented.hpp>
 
 #include <functional>
+#include <type_traits>
 #include <utility>
 
 namespace stoa {
@@ -28,8 +29,14 @@ public:
     explicit StudentFunction(const char* name) : m_name(name) {}
 
     /// Hands the function over (a function, a lambda, or nullptr to unset it).
-    StudentFunction& operator=(Function function) {
-        m_function = std::move(function);
+    /// Not for another StudentFunction (that is a copy): the test comes first,
+    /// so that copying a table whose types are only declared never asks whether
+    /// a StudentFunction converts to a std::function (clang would need the
+    /// complete result type for it).
+    template <class F, class = std::enable_if_t<std::conjunction_v<
+                           std::negation<std::is_same<std::decay_t<F>, StudentFunction>>, std::is_constructible<Function, F>>>>
+    StudentFunction& operator=(F&& function) {
+        m_function = std::forward<F>(function);
         return *this;
     }
 

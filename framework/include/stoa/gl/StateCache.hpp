@@ -9,8 +9,8 @@
 // calls glEnable) must be followed by forget(): the framework renderers do that
 // after every call into lab code.
 //
-// One cache per process, for the context that is current: HeadlessContext and
-// Window reset it when they make a context current.
+// One cache per context, in its GpuResources: current() is the current
+// context's, reset when HeadlessContext or Window makes its context current.
 
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/RenderState.hpp>

@@ -34,7 +34,7 @@ public:
     /// How many cached textures are still alive.
     int aliveCount() const;
 
-    /// The cache MeshObject uses.
+    /// The current context's cache (GpuResources), which MeshObject uses.
     static TextureCache& shared();
 
 private:

@@ -18,8 +18,8 @@
 //   --render NAME --output FILE [--backend osmesa|egl]
 //                              render a case headless into a PNG
 //   --cases FILE.ini           with any of the above: the cases come from FILE.ini
-//                              instead of the lab's cases.ini (the grader passes a
-//                              lab's hidden_cases.ini this way)
+//                              instead of the lab's cases.ini (the grader passes the
+//                              manifest it planned each case from this way)
 // Exit status: 0 done; 1 error; 2 bad command line; 3 not attempted (a stub is still in place);
 // 4 a property check does not hold.
 
@@ -35,11 +35,11 @@ namespace stoa {
 int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv);
 
 /// For a tool built on a lab's app (stoa-crowds, stoa-editor): runs `lab` on
-/// the case `caseName` of the manifest text `cases`, written to a temporary
-/// file for the run. `options` are the tool's own flags for it: `--render
-/// FILE` (the case's picture, headless), `--screenshot FILE`, `--backend
-/// NAME`; without --render the case opens in a window. `program` names the
-/// tool in messages and as argv[0].
+/// the case `caseName` of the manifest text `cases`, parsed in memory (no file
+/// is written). `options` are the tool's own flags for it: `--render FILE` (the
+/// case's picture, headless), `--screenshot FILE`, `--backend NAME`; without
+/// --render the case opens in a window. `program` names the tool in messages
+/// and as argv[0].
 int runLabOnCase(Lab& lab, const LabBuildInfo& info, const std::string& program, const std::string& cases,
                  const std::string& caseName, const std::vector<std::string>& options);
 

@@ -32,6 +32,7 @@
 #include <stoa/render/CrowdRenderer.hpp>
 #include <stoa/render/DeferredRenderer.hpp>
 #include <stoa/render/FrameUniforms.hpp>
+#include <stoa/render/ShadowCascades.hpp>
 #include <stoa/render/ShadowRenderer.hpp>
 #include <stoa/render/TextureOverlay.hpp>
 #include <stoa/scene/Light.hpp>
@@ -92,7 +93,7 @@ struct CourseSettings {
     bool culling = true;             // false: every object drawn, at full detail
     bool shadows = true;
     PcfMode pcf = PcfMode::ThreeByThree;
-    int cascades = 3;                // 1..ShadowRenderer::kMaxCascades
+    int cascades = 3;                // 1..ShadowCascades::kMaxCascades
     float shadowFar = 90.0f;         // view depth where the last cascade ends, metres
     int shadowMapSize = 1024;        // each cascade's, texels per side
     bool normalMaps = true;
@@ -189,10 +190,7 @@ private:
     CoursePrograms m_programs;
     std::unique_ptr<DeferredRenderer> m_deferred;
     std::unique_ptr<AmbientOcclusionPass> m_occlusion;
-    std::array<Framebuffer, ShadowRenderer::kMaxCascades> m_cascadeMaps;
-    std::array<glm::mat4, ShadowRenderer::kMaxCascades> m_cascadeMatrices{};
-    std::vector<float> m_splits;
-    int m_cascadeCount = 0;
+    ShadowCascades m_cascades;
     FrameUniforms m_lightFrame;      // a cascade's matrix as the projection, for the agents' depth pass
     FrameUniforms m_markerFrame;     // the camera, the ambient light and the sun, for the crowd's markers
     CubeMap m_sky;

@@ -16,7 +16,7 @@
 //
 // The student's functions reach it through the framework's student-code table
 // (StudentCode::deferred), which the program fills at start-up; the student's
-// GLSL (08_deferred/g_buffer.glsl) is in the programs the lab loads.
+// GLSL (08_deferred/student/g_buffer.glsl) is in the programs the lab loads.
 //
 //   DeferredRenderer renderer(programs);
 //   renderer.render(drawList, lights, lighting, camera, size, settings);

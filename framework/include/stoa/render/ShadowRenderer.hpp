@@ -14,6 +14,7 @@
 
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/render/ForwardRenderer.hpp>
+#include <stoa/render/ShadowCascades.hpp>
 #include <stoa/render/TextureOverlay.hpp>
 
 #include <glm/mat4x4.hpp>
@@ -35,11 +36,6 @@ enum class PcfMode { Single = 0, TwoByTwo = 1, ThreeByThree = 2 };
 
 /// "single", "2x2", "3x3".
 const char* toString(PcfMode mode);
-
-/// A cascade's depth bias (slope factor, minimum, maximum) in its own window-depth
-/// units, for shadows.glsl's slopeScaledBias(): a fixed number of its texels'
-/// world size, so that every cascade's bias covers the same share of a texel.
-glm::vec3 cascadeDepthBias(const glm::mat4& cascadeMatrix, int mapSize);
 
 /// The light that casts shadows: the scene's directional light 0 (orthographic
 /// map) or its point light 0 (perspective map).
@@ -98,7 +94,7 @@ public:
 
     glm::vec3 clearColor{0.55f, 0.68f, 0.82f};   // a sky
 
-    static constexpr int kMaxCascades = 4;   // cascaded.frag's MAX_CASCADES
+    static constexpr int kMaxCascades = ShadowCascades::kMaxCascades;
 
 private:
     static constexpr int kShadowMapUnit = 5;   // clear of the units materials use
@@ -115,9 +111,7 @@ private:
     const Program& m_mapViewProgram;
     const Program* m_cascadeProgram = nullptr;
     Framebuffer m_shadowMap;
-    std::array<Framebuffer, kMaxCascades> m_cascadeMaps;
-    std::array<glm::mat4, kMaxCascades> m_cascadeMatrices{};
-    std::vector<float> m_splits;   // the last cascaded frame's split depths, count + 1
+    ShadowCascades m_cascades;
     ForwardRenderer m_forward;
     TextureOverlay m_overlay;
 };

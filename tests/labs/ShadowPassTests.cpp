@@ -64,7 +64,7 @@ glm::vec4 evaluate(const std::string& expression, const stoa::Texture2D* map = n
                                "    gl_Position = vec4(corner, 0.0, 1.0);\n"
                                "}\n";
     const std::string fragment = "#version 330 core\n"
-                                 "#include \"05_shadows/shadows.glsl\"\n"
+                                 "#include \"05_shadows/student/shadows.glsl\"\n"
                                  "uniform sampler2D uMap;\n"
                                  "out vec4 result;\n"
                                  "void main() { result = vec4(" + expression + "); }\n";
