@@ -7,9 +7,11 @@ Checks that the docs hold together with the code and the grader's galleries:
    framework/ and the galleries' mistake.txt files.
 2. Every "Author (year)", "Author et al. (year)" or "Author and Author (year)" citation in docs/ has
    its entry in docs/references.md, and docs/references.md is in the site's nav (mkdocs.yml).
-3. Each lab page's pictures show what their captions say: "Reference picture of case X" is
-   images/NN/X.png; a mistake's picture "..., case X" is images/NN/mistakes/M.png where X is the
-   first case the gallery says M fails; and every picture has the size of its case (cases.ini).
+3. Each lab page's pictures show what their captions say, from where the grader keeps them (the
+   site copies them in: docs/hooks/reference_pictures.py): "Reference picture of case X" is
+   autograder/references/NN/X.png; a mistake's picture "..., case X" is the gallery's
+   autograder/references/NN/mistakes/M/X.png, of a case the gallery says M fails; every picture
+   exists and has the size of its case (cases.ini).
 4. Each "Common mistakes" section's "Fails:" line lists exactly the cases the gallery says that
    mistake fails (autograder/references/NN/mistakes/M/mistake.txt, written by
    `stoa-grade --update-references` from the measured runs; for a mistake that fails property
@@ -124,7 +126,9 @@ def gallery(lab):
     return mistakes
 
 
-picture = re.compile(r"!\[([^\]]*)\]\(\.\./images/(\d\d_\w+)/(mistakes/)?([\w-]+)\.png\)")
+picture = re.compile(r"!\[([^\]]*)\]\(\.\./\.\./autograder/references/(\d\d_\w+)/"
+                     r"(?:mistakes/([\w-]+)/)?([\w-]+)\.png\)")
+old_picture = re.compile(r"!\[[^\]]*\]\([./]*images/\d\d_\w+/")
 for page in sorted((root / "docs" / "labs").glob("[0-9][0-9]_*.md")):
     lab = page.stem
     manifest = root / "labs" / lab / "cases.ini"
@@ -134,9 +138,14 @@ for page in sorted((root / "docs" / "labs").glob("[0-9][0-9]_*.md")):
     mistakes = gallery(lab)
     lines = page.read_text(encoding="utf-8").splitlines()
     for number, line in enumerate(lines, 1):
+        if old_picture.search(line):
+            problem(page, number, "a lab picture under docs/images/; link the reference itself, "
+                                  f"../../autograder/references/{lab}/CASE.png (or mistakes/M/CASE.png)")
         for match in picture.finditer(line):
-            caption, image_lab, is_mistake, stem = match.groups()
-            image = root / "docs" / "images" / image_lab / (is_mistake or "") / (stem + ".png")
+            caption, image_lab, mistake, stem = match.groups()
+            image = root / "autograder" / "references" / image_lab / (f"mistakes/{mistake}" if mistake else "") / (stem + ".png")
+            if image_lab != lab:
+                problem(page, number, f"a picture of lab {image_lab} on the page of lab {lab}")
             named = re.search(r"case (\w+)\s*$", caption)
             if not named:
                 problem(page, number, f"the caption '{caption}' does not name its case ('..., case NAME')")
@@ -146,18 +155,19 @@ for page in sorted((root / "docs" / "labs").glob("[0-9][0-9]_*.md")):
                 problem(page, number, f"the caption names case {case_name}, which labs/{lab}/cases.ini does not have"
                                       + (" as a picture case (it is a property check)" if case_name in checks else ""))
                 continue
-            if is_mistake:
-                fails = mistakes.get(stem)
-                if fails is None:
-                    problem(page, number, f"picture of mistake {stem}, which the gallery of {lab} does not have")
-                elif fails and fails[0] != case_name:
-                    problem(page, number, f"the picture of mistake {stem} shows case {fails[0]} "
-                                          f"(docs/generate-images.sh renders its first failed case), "
-                                          f"but the caption says {case_name}")
-                    case_name = fails[0]
-            elif stem != case_name:
+            if stem != case_name:
                 problem(page, number, f"the caption says case {case_name} but the picture is {stem}.png")
-            if image.exists() and sizes.get(case_name) and png_size(image) != sizes[case_name]:
+            if mistake:
+                fails = mistakes.get(mistake)
+                if fails is None:
+                    problem(page, number, f"picture of mistake {mistake}, which the gallery of {lab} does not have")
+                elif fails and stem not in fails:
+                    problem(page, number, f"the picture of mistake {mistake} shows case {stem}, which the gallery "
+                                          f"says it does not fail (it fails {' '.join(fails)})")
+            if not image.is_file():
+                problem(page, number, f"{image.relative_to(root)} does not exist"
+                                      + (" (stoa-grade --update-references writes it)" if mistake else ""))
+            elif sizes.get(case_name) and png_size(image) != sizes[case_name]:
                 problem(page, number, f"{image.relative_to(root)} is {png_size(image)}, "
                                       f"case {case_name} renders at {sizes[case_name]}")
 
@@ -169,7 +179,7 @@ for page in sorted((root / "docs" / "labs").glob("[0-9][0-9]_*.md")):
         text = " ".join(text_lines)
         # The mistake a section is about: its picture, or a "<!-- mistake: NAME -->" marker
         # where the picture is shown in the theory above.
-        shown = [m.group(4) for m in picture.finditer(text) if m.group(3)]
+        shown = [m.group(3) for m in picture.finditer(text) if m.group(3)]
         shown += re.findall(r"<!-- mistake: (\w+) -->", text)
         if not shown:
             return

@@ -11,9 +11,9 @@ for lab in "$source"/labs/[0-9][0-9]_*/; do
   name=$(basename "$lab")
   mkdir -p "$work/labs/$name"
   cp "$lab/cases.ini" "$work/labs/$name/"
-  if [ -d "$source/autograder/references/$name/mistakes" ]; then
-    mkdir -p "$work/autograder/references/$name"
-    cp -r "$source/autograder/references/$name/mistakes" "$work/autograder/references/$name/"
+  # The reference pictures the pages show, and the galleries.
+  if [ -d "$source/autograder/references/$name" ]; then
+    cp -r "$source/autograder/references/$name" "$work/autograder/references/"
   fi
 done
 
@@ -25,13 +25,15 @@ printf '\nAs seed 002 shows, and as Blinn (1979) wrote.\n' >> "$work/docs/labs/0
 sed -i 's/Fails: `pcf_3x3`/Fails: `pcf_2x2`/' "$work/docs/labs/05_shadows.md"
 sed -i 's/!\[Reference picture of case orbit_front\]/![Reference picture of case wide_lens]/' "$work/docs/labs/01_transforms.md"
 sed -i '/References: references.md/d' "$work/mkdocs.yml"
+rm "$work/autograder/references/02_shading/sun.png"
 
 status=0
 "$python" "$source/tests/docs/check_docs.py" "$work" > "$work/broken.txt" || status=$?
 cat "$work/broken.txt"
 [ "$status" -eq 1 ] || { echo "FAIL: check_docs.py exited with $status on broken docs (expected 1)"; exit 1; }
 for expected in "a source named by a label" "cites Blinn (1979)" "says mistake pcf_offsets_not_texels fails pcf_2x2" \
-                "the caption says case wide_lens but the picture is orbit_front.png" "not in the site's nav"; do
+                "the caption says case wide_lens but the picture is orbit_front.png" "not in the site's nav" \
+                "autograder/references/02_shading/sun.png does not exist"; do
   grep -qF "$expected" "$work/broken.txt" || { echo "FAIL: no problem reported matching '$expected'"; exit 1; }
 done
 echo "PASS: every planted problem was reported"

@@ -18,15 +18,15 @@ mkdir -p "$work"
 "$python" "$source/autograder/check-release-paths.py" "$work" ||
   { echo "FAIL: the release as it is does not pass"; exit 1; }
 
-printf '\nThe tests in `tests/labs/normals_test.cpp` check it; run `build/bin/stoa-tests-labs`.\n' \
+printf '\nThe tests in `tests/labs/NormalsTests.cpp` check it; run `build/bin/stoa-tests-labs`.\n' \
   >> "$work/docs/labs/03_meshes.md"
-printf '// See shaders/common/no_such_file.glsl.\n' >> "$work/labs/02_shading/lighting.glsl"
+printf '// See shaders/common/no_such_file.glsl.\n' >> "$work/labs/02_shading/student/lighting.glsl"
 status=0
 "$python" "$source/autograder/check-release-paths.py" "$work" > "$work/out.txt" || status=$?
 cat "$work/out.txt"
 [ "$status" -eq 1 ] || { echo "FAIL: exit status $status for pointers to missing files (expected 1)"; exit 1; }
-for expected in "points at tests/labs/normals_test.cpp" "points at build/bin/stoa-tests-labs" \
-                "labs/02_shading/lighting.glsl:"; do
+for expected in "points at tests/labs/NormalsTests.cpp" "points at build/bin/stoa-tests-labs" \
+                "labs/02_shading/student/lighting.glsl:"; do
   grep -qF "$expected" "$work/out.txt" || { echo "FAIL: nothing reported for '$expected'"; exit 1; }
 done
 echo "PASS: the pointers to missing files were reported"
