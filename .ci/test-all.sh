@@ -88,15 +88,21 @@ PY
 }
 trap print_table EXIT
 
+# A warning in the framework or the grader fails the build (docs/framework.md,
+# "House rules"). The code is kept clean for Debian 12's gcc 12 and clang 14; a
+# newer compiler may warn about something new: STOA_WERROR=OFF .ci/test-all.sh
+# runs everything without it.
+werror=${STOA_WERROR:-ON}
+
 # Release: the tests need no debug info, and -O2 without -g compiles and links
 # markedly faster than RelWithDebInfo (a student's build keeps RelWithDebInfo).
 stage "solutions: configure" configure build-solutions -DSTOA_USE_SOLUTIONS=ON -DCMAKE_BUILD_TYPE=Release \
-      -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -DSTOA_E2E_LAB= -DSTOA_WERROR=ON
+      -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -DSTOA_E2E_LAB= -DSTOA_WERROR="$werror"
 stage "solutions: build" cmake --build build-solutions -j"$jobs"
 stage "solutions: test" run_tests build-solutions solutions
 
 stage "sanitizer: configure" configure build-sanitize -DSTOA_USE_SOLUTIONS=ON -DSTOA_SANITIZE=ON \
-      -DCMAKE_BUILD_TYPE=Debug -DSTOA_E2E_LAB=04_normal_mapping -DSTOA_BUILD_BENCHMARKS=OFF -DSTOA_WERROR=ON
+      -DCMAKE_BUILD_TYPE=Debug -DSTOA_E2E_LAB=04_normal_mapping -DSTOA_BUILD_BENCHMARKS=OFF -DSTOA_WERROR="$werror"
 stage "sanitizer: build" cmake --build build-sanitize -j"$jobs"
 # Mesa's own allocations live until exit; LeakSanitizer reports only Stoa's.
 export LSAN_OPTIONS="suppressions=$root/.ci/lsan.supp:print_suppressions=0"
