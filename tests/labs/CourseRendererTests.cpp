@@ -12,9 +12,10 @@
 //   - a red point light reddens the floor under it;
 //   - the debug views (albedo, cascades, levels of detail) differ from the
 //     picture, and the floor (radius 0) is not tinted by its level;
-//   - DeferredSettings::beforePresent: called once per frame, with the light
-//     buffer bound, in the tiled and the volumes modes; its drawing reaches the
-//     picture; never called for a debug view.
+//   - the passes' list: in an order checkPassOrder() accepts;
+//   - DeferredRenderer's passes one by one: after lightPointLights() the light
+//     buffer is bound, in the tiled and the volumes modes; a caller's drawing
+//     into it reaches the picture; a G-buffer view does not show it.
 // Each test makes its own headless context.
 
 #include "catch.hpp"
@@ -341,7 +342,26 @@ TEST_CASE("Course views: albedo, cascades and levels of detail differ from the p
     }
 }
 
-TEST_CASE("DeferredSettings::beforePresent: once per final frame, into the light buffer", "[course]") {
+TEST_CASE("Course passes: each reads only what an earlier pass wrote, every stage has one", "[course]") {
+    stoa::HeadlessContext context;
+    ProgramStore programs;
+    const stoa::CourseRenderer renderer(stoa::CoursePrograms::load(programs.loader()));
+    const std::vector<stoa::PassSignature> passes = renderer.passes();
+    CHECK_NOTHROW(stoa::checkPassOrder(passes));   // as the constructor does
+    REQUIRE(passes.size() >= static_cast<std::size_t>(stoa::CoursePass::Count));
+    CHECK(passes.front().name == "culling and LOD");
+    CHECK(passes.front().reads.empty());
+    bool drawsOutput = false;
+    for (const stoa::PassSignature& pass : passes) {
+        CAPTURE(pass.name);
+        CHECK_FALSE(pass.writes.empty());
+        drawsOutput = drawsOutput || pass.writes.contains(stoa::FrameTarget::Output);
+    }
+    CHECK(drawsOutput);
+}
+
+TEST_CASE("DeferredRenderer's passes one by one: a pass of the caller's between lightPointLights() and present()",
+          "[course]") {
     stoa::HeadlessContext context;
     ProgramStore programs;
     stoa::DeferredRenderer renderer(stoa::DeferredPrograms::load(programs.loader()));
@@ -349,38 +369,30 @@ TEST_CASE("DeferredSettings::beforePresent: once per final frame, into the light
     const stoa::OrbitCamera camera({0.0f, 0.0f, 0.0f}, 5.0f, 0.0f, 20.0f);
     stoa::PointLight light;
     light.position = {0.0f, 1.0f, 0.0f};
-
-    int calls = 0;
-    stoa::DeferredSettings settings;
-    settings.beforePresent = [&](const stoa::Framebuffer& lightBuffer) {
-        ++calls;
-        CHECK(stoa::StateCache::current().drawFramebuffer() == lightBuffer.id());
-        CHECK(lightBuffer.width() == kSize.x);
-        CHECK(lightBuffer.height() == kSize.y);
-        glClearColor(0.0f, 1.0f, 0.0f, 1.0f);   // the caller's own light: green everywhere
-        glClear(GL_COLOR_BUFFER_BIT);
-    };
     const glm::u8vec4 green(0, 255, 0, 255);
 
     for (const stoa::LightingMode mode : {stoa::LightingMode::Tiled, stoa::LightingMode::Volumes}) {
         CAPTURE(stoa::toString(mode));
+        stoa::DeferredSettings settings;
         settings.mode = mode;
-        settings.view = stoa::DeferredView::Final;
-        calls = 0;
-        target.bind();
-        renderer.render({}, {light}, stoa::SceneLighting{}, camera, kSize, settings);
-        CHECK(calls == 1);
+        renderer.renderGeometry({}, camera, kSize);
+        renderer.beginLighting(camera, kSize, stoa::SceneLighting{});
+        renderer.lightPointLights({}, {light}, stoa::SceneLighting{}, settings);
+        const stoa::Framebuffer& lightBuffer = renderer.lightBuffer();
+        CHECK(stoa::StateCache::current().drawFramebuffer() == lightBuffer.id());   // left bound for the caller
+        CHECK(lightBuffer.width() == kSize.x);
+        CHECK(lightBuffer.height() == kSize.y);
+        glClearColor(0.0f, 1.0f, 0.0f, 1.0f);   // the caller's own light: green everywhere
+        glClear(GL_COLOR_BUFFER_BIT);
+        renderer.present(target.id(), settings);
         CHECK(stoa::StateCache::current().drawFramebuffer() == target.id());   // presented into the caller's target
         const stoa::Image picture = target.readColor();
         CHECK(near(picture.pixel(0, 0), green, 1));
         CHECK(near(picture.pixel(kSize.x / 2, kSize.y / 2), green, 1));
         CHECK(near(picture.pixel(kSize.x - 1, kSize.y - 1), green, 1));
 
-        settings.view = stoa::DeferredView::Albedo;   // a debug view: not the final picture
-        calls = 0;
-        target.bind();
-        renderer.render({}, {light}, stoa::SceneLighting{}, camera, kSize, settings);
-        CHECK(calls == 0);
+        settings.view = stoa::DeferredView::Albedo;   // a G-buffer view shows the G-buffer, not the light buffer
+        renderer.present(target.id(), settings);
         CHECK_FALSE(near(target.readColor().pixel(kSize.x / 2, kSize.y / 2), green, 1));
     }
     CHECK(stoa::test::takeGlError() == GL_NO_ERROR);

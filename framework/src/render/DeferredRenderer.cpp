@@ -130,44 +130,42 @@ void DeferredRenderer::renderGeometry(const DrawList& items, const Camera& camer
 void DeferredRenderer::render(const DrawList& items, const std::vector<PointLight>& lights, const SceneLighting& lighting,
                               const Camera& camera, glm::ivec2 size, const DeferredSettings& settings) {
     const GLuint output = StateCache::current().drawFramebuffer();
-    m_stats = DeferredStats{};
-    m_stats.lights = static_cast<int>(lights.size());
     const bool needsGBuffer = settings.mode != LightingMode::Forward || settings.view != DeferredView::Final;
-    if (needsGBuffer && !settings.reuseGBuffer) {
-        renderGeometry(items, camera, size);
-    } else {
-        prepareTargets(size);
-    }
-    updateFrame(camera, size, lighting);
-
+    if (needsGBuffer && !settings.reuseGBuffer) renderGeometry(items, camera, size);
+    beginLighting(camera, size, lighting);
+    m_stats.lights = static_cast<int>(lights.size());
     if (settings.view == DeferredView::Final && settings.mode == LightingMode::Tiled) {
-        if (!settings.beforePresent) {
-            // One pass, straight into the output: ambient light and every tile's lights.
-            StateCache::current().bindFramebuffer(output);
-            drawTiled(lights, lighting, settings, false);
-            return;
-        }
-        // The same pass into the light buffer, for the caller's passes to add to.
-        copyDepthToLightBuffer();
-        StateCache::current().bindFramebuffer(m_lightBuffer.id());
+        // One pass, straight into the output: ambient light and every tile's lights.
+        StateCache::current().bindFramebuffer(output);
         drawTiled(lights, lighting, settings, false);
-        StateCache::current().bindFramebuffer(m_lightBuffer.id());
-        settings.beforePresent(m_lightBuffer);
-        present(output, settings);
         return;
     }
+    lightPointLights(items, lights, lighting, settings);
+    present(output, settings);
+}
+
+void DeferredRenderer::beginLighting(const Camera& camera, glm::ivec2 size, const SceneLighting& lighting) {
+    m_stats = DeferredStats{};
+    prepareTargets(size);
+    updateFrame(camera, size, lighting);
+}
+
+void DeferredRenderer::lightPointLights(const DrawList& items, const std::vector<PointLight>& lights,
+                                        const SceneLighting& lighting, const DeferredSettings& settings) {
+    m_stats.lights = static_cast<int>(lights.size());
     if (settings.view == DeferredView::Final && settings.mode == LightingMode::Forward) {
         drawForward(items, lights, lighting, settings);
     } else if (settings.view == DeferredView::Final) {
         // The light buffer gets the G-buffer's depth and stencil (a copy: a pass
         // may not sample a texture it also depth-tests against); the ambient
-        // pass fills it, the volumes add to it.
+        // pass fills it and the volumes add to it, or the tiled pass does both.
         copyDepthToLightBuffer();
-        drawAmbient(lighting, settings);
-        drawVolumes(lights, settings, false);
-        if (settings.beforePresent) {
+        if (settings.mode == LightingMode::Tiled) {
             StateCache::current().bindFramebuffer(m_lightBuffer.id());
-            settings.beforePresent(m_lightBuffer);
+            drawTiled(lights, lighting, settings, false);
+        } else {
+            drawAmbient(lighting, settings);
+            drawVolumes(lights, settings, false);
         }
     } else if (settings.view == DeferredView::Overdraw) {
         // Counts, added up in the light buffer's red channel.
@@ -181,7 +179,7 @@ void DeferredRenderer::render(const DrawList& items, const std::vector<PointLigh
         StateCache::current().bindFramebuffer(m_lightBuffer.id());
         drawTiled(lights, lighting, settings, true);
     }
-    present(output, settings);
+    StateCache::current().bindFramebuffer(m_lightBuffer.id());
 }
 
 void DeferredRenderer::copyDepthToLightBuffer() {

@@ -1,6 +1,8 @@
 #pragma once
 // Every pass of the course in one frame: stoa-editor's deferred pipeline and
-// its showcase (docs/showcase.md). In order:
+// its showcase (docs/showcase.md). A list of pass objects, each of which says
+// what it reads and writes of the frame's targets (passes(),
+// stoa/render/FramePass.hpp); the constructor checks their order. In order:
 //
 //   culling    each object's bounding sphere against the camera's frustum and
 //              its level of detail from its size on screen (lab 06)
@@ -25,16 +27,12 @@
 //   renderer.render(items, lighting, camera, size, settings, nullptr);
 //   std::printf("%.1f ms shadows\n", 1e3 * renderer.stats().seconds[int(CoursePass::Shadows)]);
 #include <stoa/geometry/Bounds.hpp>
-#include <stoa/gl/CubeMap.hpp>
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/GpuMesh.hpp>
-#include <stoa/render/AmbientOcclusionPass.hpp>
 #include <stoa/render/CrowdRenderer.hpp>
 #include <stoa/render/DeferredRenderer.hpp>
-#include <stoa/render/FrameUniforms.hpp>
-#include <stoa/render/ShadowCascades.hpp>
+#include <stoa/render/FramePass.hpp>
 #include <stoa/render/ShadowRenderer.hpp>
-#include <stoa/render/TextureOverlay.hpp>
 #include <stoa/scene/Light.hpp>
 
 #include <glm/mat3x3.hpp>
@@ -51,9 +49,11 @@
 namespace stoa {
 
 class Camera;
+class CourseFramePass;
 class CrowdSimulation;
 class Program;
 class Texture2D;
+struct CourseTargets;
 struct Material;
 
 /// One object to draw: its levels of detail, placement, material and maps.
@@ -172,34 +172,18 @@ public:
 
     const CourseStats& stats() const { return m_stats; }
     /// Each item's level in the last frame: -2 culled, -1 too small, else its level.
-    const std::vector<int>& levels() const { return m_levels; }
+    const std::vector<int>& levels() const;
+    /// The passes in the order render() runs them, with what each reads and
+    /// writes; a pass that is off for a frame (a view, a setting, a lab not
+    /// handed over) is skipped in it.
+    std::vector<PassSignature> passes() const;
 
 private:
-    void cull(const std::vector<CourseItem>& items, const Camera& camera, glm::ivec2 size, const CourseSettings& settings);
-    void renderCascades(const std::vector<CourseItem>& items, const CourseLighting& lighting, const Camera& camera,
-                        glm::ivec2 size, const CourseSettings& settings, const CourseCrowd* crowd);
-    void renderGeometry(const std::vector<CourseItem>& items, const Camera& camera, glm::ivec2 size,
-                        const CourseSettings& settings, const CourseCrowd* crowd);
-    void drawSun(const CourseLighting& lighting, const Camera& camera, const CourseSettings& settings);
-    void drawSky(const Framebuffer& target);
-    void drawIds(const std::vector<CourseItem>& items, glm::ivec2 size, GLuint output);
-    void drawMarkers(const Framebuffer& target, const CourseLighting& lighting, const Camera& camera,
-                     const CourseSettings& settings, const CourseCrowd& crowd);
     void endPass(CoursePass pass, bool timed);
 
-    CoursePrograms m_programs;
-    std::unique_ptr<DeferredRenderer> m_deferred;
-    std::unique_ptr<AmbientOcclusionPass> m_occlusion;
-    ShadowCascades m_cascades;
-    FrameUniforms m_lightFrame;      // a cascade's matrix as the projection, for the agents' depth pass
-    FrameUniforms m_markerFrame;     // the camera, the ambient light and the sun, for the crowd's markers
-    CubeMap m_sky;
-    GpuMesh m_skyCube;
-    TextureOverlay m_overlay;
-    std::unique_ptr<Framebuffer> m_idTarget;   // GL_RGBA8UI, for the "ids" view
-    std::vector<int> m_levels;
+    std::unique_ptr<CourseTargets> m_targets;
+    std::vector<std::unique_ptr<CourseFramePass>> m_passes;
     CourseStats m_stats;
-    glm::mat4 m_view{1.0f};
     double m_passStart = 0.0;
 };
 

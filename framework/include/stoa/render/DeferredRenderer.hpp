@@ -12,7 +12,9 @@
 //
 // All three light with shaders/deferred/lighting.glsl: forward and the volumes
 // into a 16-bit float light buffer, then copied, clamped, into the framebuffer
-// bound when render() is called; the tiled pass straight into that framebuffer. Lab 08's app and benchmark and lab 09's app draw through it.
+// bound when render() is called; the tiled pass straight into that framebuffer.
+// Lab 08's app and benchmark and lab 09's app draw through render(); the
+// course's renderer calls its passes one by one (beginLighting() and after).
 //
 // The student's functions reach it through the framework's student-code table
 // (StudentCode::deferred), which the program fills at start-up; the student's
@@ -100,12 +102,6 @@ struct DeferredSettings {
     /// Skip the geometry pass: renderGeometry() has just filled the G-buffer
     /// for the same items, camera and size (lab 09 reads it before lighting).
     bool reuseGBuffer = false;
-    /// The final picture in the volumes and tiled modes only (not Forward,
-    /// which has no light buffer): called once the point lights are in the light
-    /// buffer (HDR, with a copy of the G-buffer's depth and stencil), which is
-    /// bound, before it is presented: a caller's own light and sky passes
-    /// (stoa/render/CourseRenderer.hpp: the shadowed sun, the skybox).
-    std::function<void(const Framebuffer& lightBuffer)> beforePresent;
 };
 
 /// What the last render() did, for the window's title line and the benchmark.
@@ -134,7 +130,26 @@ public:
     /// for a pass of the lab's own that reads the G-buffer (lab 09's occlusion).
     void bindGBuffer(const Program& program) const;
 
+    /// The passes of render() one by one, for a renderer that adds its own
+    /// between them (CourseRenderer: the shadowed sun, the sky):
+    ///   renderGeometry(items, camera, size);            // or the caller's own draws into gBuffer()
+    ///   beginLighting(camera, size, lighting);          // targets and frame block
+    ///   lightPointLights(lights, lighting, settings);   // into lightBuffer(), left bound
+    ///   ...the caller's passes into lightBuffer()...
+    ///   present(output, settings);
+    /// A final picture goes through the light buffer in every mode this way
+    /// (render() lights the tiled one straight into its output).
+    void beginLighting(const Camera& camera, glm::ivec2 size, const SceneLighting& lighting);
+    /// The ambient light and the point lights (or, for the Overdraw and
+    /// TileCounts views, their counts) into the light buffer, which is bound
+    /// after; nothing for the G-buffer's own views.
+    void lightPointLights(const DrawList& items, const std::vector<PointLight>& lights, const SceneLighting& lighting,
+                          const DeferredSettings& settings);
+    /// The light buffer (or settings.view of the G-buffer) into `target`.
+    void present(GLuint target, const DeferredSettings& settings);
+
     const GBuffer& gBuffer() const { return m_gBuffer; }
+    const Framebuffer& lightBuffer() const { return m_lightBuffer; }
     const DeferredStats& stats() const { return m_stats; }
     /// The lists of the last tiled frame.
     const TileLightLists& tileLists() const { return m_tiles; }
@@ -152,7 +167,6 @@ private:
                    bool countOnly);
     std::vector<DepthRange> tileDepthRanges(const TileGrid& grid) const;
     void uploadLights(const std::vector<PointLight>& lights, const std::vector<float>& reaches);
-    void present(GLuint target, const DeferredSettings& settings);
 
     DeferredPrograms m_programs;
     GBuffer m_gBuffer;
