@@ -6,6 +6,12 @@ a file may include the headers of its own layer and of the layers below it,
 never of a layer above. No framework file reaches outside framework/ with a
 relative include ("../"), and none names labs/, solutions/ or autograder/.
 
+stoa_core, the GL-free library the grader links, is one list of sources in
+framework/CMakeLists.txt (the areas of layers 0-2 and a few GL-free files of
+higher areas: manifests, GLSL expansion, asset and scene data). None of them
+may reach OpenGL: no file they include, directly or through stoa headers,
+includes GL, EGL, GLEW, GLUT or OSMesa.
+
     check_layers.py [FRAMEWORK_DIR]      exit 0: the layers hold; 1: what breaks them
 """
 import pathlib
@@ -71,18 +77,60 @@ def problems(root):
     return found
 
 
+GL_HEADER = re.compile(r"^(GL|EGL|GLES\d*)/|^(glew|glut|osmesa)\.h$", re.IGNORECASE)
+
+
+def core_sources(root):
+    """The sources of `target_sources(stoa_core PRIVATE ...)` in framework/CMakeLists.txt."""
+    text = "\n".join(line.split("#")[0] for line in (root / "CMakeLists.txt").read_text().splitlines())
+    sources = []
+    for block in re.findall(r"target_sources\(stoa_core\s+PRIVATE(.*?)\)", text, re.S):
+        sources += [word for word in block.split() if word.endswith(".cpp")]
+    return [root / source for source in sources]
+
+
+def gl_reached(root):
+    """Each stoa_core source that reaches an OpenGL header, with the chain of includes."""
+    found = []
+    for source in core_sources(root):
+        if not source.is_file():
+            found.append(f"{source}: listed for stoa_core in {root / 'CMakeLists.txt'} but missing")
+            continue
+        seen, stack = set(), [(source, [source.name])]
+        while stack:
+            path, chain = stack.pop()
+            if path in seen:
+                continue
+            seen.add(path)
+            for line in path.read_text(errors="replace").splitlines():
+                match = INCLUDE.match(line)
+                if not match:
+                    continue
+                name = match.group(2)
+                if GL_HEADER.match(name):
+                    found.append(f"{source}: stoa_core reaches OpenGL: {' -> '.join(chain + [name])} "
+                                 f"(the GL-free library; docs/framework.md, \"Two libraries\")")
+                    stack.clear()
+                    break
+                header = root / "include" / name if name.startswith("stoa/") else path.parent / name
+                if header.is_file():
+                    stack.append((header, chain + [name]))
+    return found
+
+
 def main():
     root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parents[2] / "framework")
     if not (root / "include" / "stoa").is_dir():
         print(f"check_layers: {root} is not the framework folder (no include/stoa/)", file=sys.stderr)
         return 2
-    found = problems(root)
+    found = problems(root) + gl_reached(root)
     for problem in found:
         print(problem)
     if found:
         print(f"check_layers: {len(found)} include(s) break the layers")
         return 1
-    print(f"check_layers: {sum(len(a) for a in LAYERS)} areas in {len(LAYERS)} layers, every include goes down")
+    print(f"check_layers: {sum(len(a) for a in LAYERS)} areas in {len(LAYERS)} layers, every include goes down; "
+          f"the {len(core_sources(root))} sources of stoa_core reach no OpenGL header")
     return 0
 
 

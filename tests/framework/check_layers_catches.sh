@@ -22,4 +22,16 @@ if python3 "$here/check_layers.py" "$work/framework" >"$work/out.txt"; then
   echo "FAIL: an include of a lab's header passed"; exit 1
 fi
 grep -q "includes nothing outside framework/" "$work/out.txt" || { echo "FAIL:"; cat "$work/out.txt"; exit 1; }
+first=$(head -n 1 "$work/out.txt")
+sed -i '1d' "$target"
+# A GL-free source of stoa_core (the manifests, in the lab shell's area, where
+# the layers allow GL) that reaches OpenGL through a header must fail too.
+manifest="$work/framework/src/lab/CaseManifest.cpp"
+sed -i '1i #include <stoa/gl/Program.hpp>' "$manifest"
+if python3 "$here/check_layers.py" "$work/framework" >"$work/out.txt"; then
+  echo "FAIL: a stoa_core source that reaches OpenGL passed"; exit 1
+fi
+grep -q "CaseManifest.cpp: stoa_core reaches OpenGL: CaseManifest.cpp -> stoa/gl/Program.hpp -> " "$work/out.txt" ||
+  { echo "FAIL: the message does not show the chain of includes:"; cat "$work/out.txt"; exit 1; }
+echo "refused as expected: $first"
 echo "refused as expected: $(head -n 1 "$work/out.txt")"
