@@ -202,10 +202,11 @@ TEST_CASE("a lab that waits for an earlier lab's stub points to that lab", "[gra
     std::ostringstream out;
     printReport(out, results, summarize(results));
     const std::string text = out.str();
-    CHECK(text.find("waits for lab 01_transforms (OrbitCamera::eyePosition() is a stub there): start with "
-                    "docs/labs/01_transforms.md") != std::string::npos);
+    CHECK(text.find("waits for lab 01_transforms (OrbitCamera::eyePosition() is a stub there)\n") != std::string::npos);
     CHECK(text.find("start with docs/labs/06_culling.md") != std::string::npos);
     CHECK(text.find("start with docs/labs/07_picking.md") == std::string::npos);
+    // Lab 01 is not in this report: the next step is still where lab 07 waits.
+    CHECK(text.find("\nnext: lab 01_transforms, docs/labs/01_transforms.md\nscore: 0 / 7\n") != std::string::npos);
 }
 
 TEST_CASE("printReport: a lab where nothing was attempted names the stub its first case ran into",
@@ -223,8 +224,64 @@ TEST_CASE("printReport: a lab where nothing was attempted names the stub its fir
     // On a line of its own under the lab's, the file without its folders: the lines stay short.
     CHECK(text.find("start with docs/labs/09_ssao.md\n") != std::string::npos);
     CHECK(text.find("first stub: blurAmbientOcclusion (ssao.glsl:67)\n") != std::string::npos);
-    CHECK(text.find("first stub: meshBoundingSphere()\n") != std::string::npos);
+    // Only the first lab to start with has its stub's line: a fresh clone's report fits a screen.
+    CHECK(text.find("first stub: meshBoundingSphere()") == std::string::npos);
+    CHECK(text.find("next: lab 09_ssao, docs/labs/09_ssao.md\n") != std::string::npos);
     CHECK(text.find("/home/student") == std::string::npos);
     std::istringstream lines(text);
     for (std::string line; std::getline(lines, line);) CHECK(line.size() <= 100);
+}
+
+TEST_CASE("printReport: a fresh clone (every lab a stub, every cascade run too) fits one screen", "[grader][report]") {
+    // Eleven labs as the README's main command grades them on a fresh clone:
+    // each lab's own run not attempted (lab 02 and others wait for lab 01's
+    // cameras), and each cascade run, with the earlier labs' solutions, not
+    // attempted either (the lab's own stubs). Nothing but one line per lab,
+    // the total, the next step and the score.
+    std::vector<GradeResult> results;
+    const std::vector<std::string> labs = {"01_transforms", "02_shading", "03_meshes", "04_normal_mapping",
+                                           "05_shadows", "06_culling", "07_picking", "08_deferred",
+                                           "09_ssao", "10_crowds", "11_editor"};
+    for (const std::string& lab : labs) {
+        const bool waits = lab == "02_shading" || lab == "07_picking" || lab == "11_editor";
+        for (int i = 0; i < 8; ++i) {
+            const std::string name = "case_with_a_long_name_" + std::to_string(i);
+            results.push_back(result(lab, name, GradeStatus::NotAttempted, 0, 2,
+                                     waits ? "not implemented: eyePosition(OrbitState) (lab 01_transforms)"
+                                           : "not implemented: firstStubOf" + lab.substr(3) + "()"));
+            if (lab == "01_transforms") continue;
+            GradeResult cascade = result(lab, name, GradeStatus::NotAttempted, 0, 2,
+                                         "not implemented: ownStubOf" + lab.substr(3) + "()");
+            cascade.cascade = true;
+            cascade.counted = false;
+            results.push_back(cascade);
+        }
+    }
+    std::ostringstream out;
+    printReport(out, results, summarize(results));
+    const std::string text = out.str();
+    INFO(text);
+    CHECK(std::count(text.begin(), text.end(), '\n') <= 20);
+    CHECK(text.find("[cascade]") == std::string::npos);
+    CHECK(text.find("with your earlier labs") == std::string::npos);
+    CHECK(text.find("details") == std::string::npos);
+    CHECK(text.find("first stub: firstStubOftransforms()\n") != std::string::npos);
+    CHECK(text.find("next: lab 01_transforms, docs/labs/01_transforms.md\nscore: 0 / 176\n") != std::string::npos);
+}
+
+TEST_CASE("printReport: a cascade run that earned points keeps its rows and its line under the lab",
+          "[grader][report]") {
+    // Lab 02 done, lab 01 not: its own run waits for lab 01, its cascade run passes.
+    GradeResult own = result("02_shading", "sun", GradeStatus::NotAttempted, 0, 2,
+                             "not implemented: eyePosition(OrbitState) (lab 01_transforms)");
+    own.counted = false;
+    GradeResult cascade = result("02_shading", "sun", GradeStatus::Passed, 2, 2, "");
+    cascade.cascade = true;
+    const std::vector<GradeResult> results = {own, cascade};
+    std::ostringstream out;
+    printReport(out, results, summarize(results));
+    const std::string text = out.str();
+    INFO(text);
+    CHECK(text.find("sun [cascade]") != std::string::npos);
+    CHECK(text.find("with your earlier labs 0, with their solutions 2: the higher counts") != std::string::npos);
 }

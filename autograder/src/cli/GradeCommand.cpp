@@ -110,7 +110,7 @@ std::vector<CaseOutcome> inReportOrder(const std::vector<PlannedLab>& labs, std:
 void writeReports(const Options& options, const Environment& env, const std::vector<GradeResult>& results,
                   double seconds) {
     Totals totals = summarize(results);
-    env.out << "\n";
+    if (!env.progressInPlace) env.out << "\n";   // after the progress lines, where they stay
     printReport(env.out, results, totals);   // a lab where nothing was attempted says where to start
     if (!options.jsonFile.empty()) {
         writeResultsJson(options.jsonFile, results, totals, seconds, summaryText(totals));

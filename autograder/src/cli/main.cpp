@@ -14,8 +14,22 @@
 #include <stoa/core/InputError.hpp>
 #include <stoa/core/Paths.hpp>
 
+#include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <iostream>
+
+#include <unistd.h>
+
+namespace {
+
+// Progress as one line rewritten in place: on a terminal that understands it.
+bool progressOnTerminal() {
+    const char* term = std::getenv("TERM");
+    return isatty(STDERR_FILENO) && term != nullptr && std::strcmp(term, "dumb") != 0;
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     using namespace stoa::grader;
@@ -40,7 +54,8 @@ int main(int argc, char** argv) {
             std::cerr << "stoa-grade: --bin-dir " << binDir.string() << " is not a folder\n";
             return 1;
         }
-        Environment env{stoa::paths::sourceDir(), std::filesystem::absolute(binDir), std::cout, std::cerr};
+        Environment env{stoa::paths::sourceDir(), std::filesystem::absolute(binDir), std::cout, std::cerr,
+                        progressOnTerminal()};
         switch (options.mode) {
         case Mode::Grade: return runGrade(options, env);
         case Mode::UpdateReferences: return runUpdateReferences(options, env);

@@ -17,6 +17,18 @@ std::vector<CaseJob> jobsOf(const std::vector<CaseOutcome>& outcomes) {
 
 } // namespace
 
+void GradingRun::progress(const std::string& line) const {
+    if (m_env.progressInPlace) {
+        m_env.err << "\r\033[K" << line << std::flush;   // over the line before
+    } else {
+        m_env.err << line << std::endl;
+    }
+}
+
+void GradingRun::endProgress() const {
+    if (m_env.progressInPlace) m_env.err << "\r\033[K" << std::flush;
+}
+
 bool noProgramToRun(const std::vector<PlannedLab>& labs, const Environment& env, const std::string& howToBuild) {
     if (!labs.empty()) return false;
     env.err << "stoa-grade: no lab program to run in " << env.binDir.string() << ": " << howToBuild << "\n";
@@ -36,8 +48,9 @@ std::vector<CaseOutcome> GradingRun::grade(std::vector<CaseOutcome> planned) {
     std::vector<GradeResult> results =
         gradeCases(jobs, m_settings, m_options.jobs, [&](std::size_t index, const GradeResult& result, std::size_t done,
                                                          std::size_t total) {
-            m_env.err << progressLine(result, done, total, planned[index].label) << std::endl;
+            progress(progressLine(result, done, total, planned[index].label));
         });
+    endProgress();
     for (std::size_t i = 0; i < planned.size(); ++i) planned[i].result = std::move(results[i]);
     return planned;
 }
@@ -49,11 +62,11 @@ std::vector<CaseOutcome> GradingRun::render(std::vector<CaseOutcome> planned) {
         CaseOutcome& outcome = planned[i];
         outcome.render = renderCase(outcome.job, m_settings);
         std::lock_guard<std::mutex> lock(progressMutex);
-        m_env.err << "[" << ++done << "/" << planned.size() << "] "
-                  << (outcome.label.empty() ? "" : outcome.label + ": ") << outcome.job.lab << "/"
-                  << outcome.job.spec.name << " ... "
-                  << (outcome.render.rendered ? "rendered" : statusName(outcome.render.status)) << std::endl;
+        progress("[" + std::to_string(++done) + "/" + std::to_string(planned.size()) + "] " +
+                 (outcome.label.empty() ? "" : outcome.label + ": ") + outcome.job.lab + "/" + outcome.job.spec.name +
+                 " ... " + (outcome.render.rendered ? "rendered" : statusName(outcome.render.status)));
     });
+    endProgress();
     return planned;
 }
 

@@ -54,6 +54,8 @@ public:
                 const std::string& under = "");
 
 private:
+    void progress(const std::string& line) const;   // a case done: a line, or the one line rewritten
+    void endProgress() const;
     const Options& m_options;
     const Environment& m_env;
     std::filesystem::path m_workDir;

@@ -73,6 +73,14 @@ bool collapsed(const Totals& totals, const std::string& lab) {
     return false;
 }
 
+// A cascade run's case that says nothing new: its lab's own stubs are untouched
+// too (every counted case and this one not attempted). A fresh clone shows no
+// cascade rows at all.
+bool quietCascade(const Totals& totals, const GradeResult& result) {
+    return result.cascade && !result.counted && result.status == GradeStatus::NotAttempted &&
+           collapsed(totals, result.lab);
+}
+
 // Errors of one lab with the same reason and output are detailed once.
 struct ErrorGroup {
     std::string lab;
@@ -216,6 +224,7 @@ TableLayout layoutOf(const std::vector<GradeResult>& results, const Totals& tota
     layout.known = std::any_of(results.begin(), results.end(),
                                [](const GradeResult& result) { return result.maxFlipMean > 0.0; });
     for (const GradeResult& result : results) {
+        if (quietCascade(totals, result)) continue;
         layout.labWidth = std::max(layout.labWidth, result.lab.size());
         layout.statusWidth = std::max(layout.statusWidth, std::string(statusName(result.status)).size());
         if (result.counted && collapsed(totals, result.lab)) {   // its one line says "(N cases)" and the lab's points
@@ -245,8 +254,10 @@ void printHeader(std::ostream& out, const TableLayout& layout) {
     out << std::string(std::max<std::size_t>(columns, 40), '-') << "\n";
 }
 
-// The one line of a lab whose every case is "not attempted", and where to start.
-void printCollapsedLab(std::ostream& out, const TableLayout& layout, const Totals& totals, const GradeResult& result) {
+// The one line of a lab whose every case is "not attempted", and where to start;
+// under the first lab to start with (`withStub`), the stub its first case met.
+void printCollapsedLab(std::ostream& out, const TableLayout& layout, const Totals& totals, const GradeResult& result,
+                       bool withStub) {
     auto lab = std::find_if(totals.labs.begin(), totals.labs.end(),
                             [&](const LabTotals& entry) { return entry.lab == result.lab; });
     int count = lab->statuses.total();
@@ -257,17 +268,18 @@ void printCollapsedLab(std::ostream& out, const TableLayout& layout, const Total
     const std::string first = labToStartWith(result);
     const std::string stub = stubNamed(result.reason);
     if (first != result.lab) {
-        out << "  waits for lab " << first << " (" << stub << " is a stub there): start with docs/labs/" << first
-            << ".md\n";
+        const std::string which = stub.empty() ? "" : " (" + stub + " is a stub there)";
+        const bool fits = layout.rowStart() + 17 + first.size() + which.size() <= kLineWidth;
+        out << "  waits for lab " << first << (fits ? which : "") << "\n";
         return;
     }
     out << "  start with docs/labs/" << result.lab << ".md\n";
-    // The stub the first case ran into, on a line of its own under that text (or
-    // under the case column, when the table is too wide for that).
+    // The stub on a line of its own under that text (or under the case column,
+    // when the table is too wide for that).
     const std::string text = "first stub: " + stub;
     std::size_t column = layout.rowStart();
     if (column + text.size() > 100) column = layout.labWidth + 2;
-    if (!stub.empty() && column + text.size() <= 100) out << std::string(column, ' ') << text << "\n";
+    if (withStub && !stub.empty() && column + text.size() <= 100) out << std::string(column, ' ') << text << "\n";
 }
 
 // One case's row: its metrics, its verdict or its reason; then its hint.
@@ -323,7 +335,7 @@ void printDetails(std::ostream& out, const TableLayout& layout, const std::vecto
     std::vector<ErrorGroup> errors;
     for (const GradeResult& result : results) {
         if (result.status == GradeStatus::Passed) continue;
-        if (result.counted && collapsed(totals, result.lab)) continue;
+        if ((result.counted && collapsed(totals, result.lab)) || quietCascade(totals, result)) continue;
         if (result.status == GradeStatus::Error) {
             const std::string output = lastLines(result.programOutput, kOutputLinesShown);
             auto group = std::find_if(errors.begin(), errors.end(), [&](const ErrorGroup& entry) {
@@ -352,24 +364,27 @@ void printDetails(std::ostream& out, const TableLayout& layout, const std::vecto
     }
 }
 
-// Missing references, the points per lab (and its cascade), the total and the score line.
-void printTotals(std::ostream& out, const TableLayout& layout, const Totals& totals) {
+// Missing references, the points per lab (and its cascade), the total, the lab
+// to start with next (`next`, when some lab has nothing attempted) and the score line.
+void printTotals(std::ostream& out, const TableLayout& layout, const Totals& totals, const std::string& next) {
     int missingReferences = totals.statuses[GradeStatus::NoReference];
     if (missingReferences > 0)
         out << "\n" << missingReferences << (missingReferences == 1 ? " case has" : " cases have")
             << " no reference image: run stoa-grade --update-references from a solutions build\n";
     out << "\n";
     for (const LabTotals& lab : totals.labs) {
-        if (lab.nothingAttempted() && !lab.hasCascade) continue;   // its one line above has the points
+        const bool cascadeSaysMore = lab.hasCascade && (lab.ownPoints > 0.0 || lab.cascadePoints > 0.0);
+        if (lab.nothingAttempted() && !cascadeSaysMore) continue;   // its one line above has the points
         out << padded(lab.lab, layout.labWidth) << "  " << formatPoints(lab.points) << " / "
             << formatPoints(lab.maxPoints) << " points  (" << lab.statuses.describe() << ")\n";
-        if (lab.hasCascade)
+        if (cascadeSaysMore)
             out << padded("", layout.labWidth) << "  with your earlier labs " << formatPoints(lab.ownPoints)
                 << ", with their solutions " << formatPoints(lab.cascadePoints) << ": the higher counts\n";
     }
     if (totals.labs.size() > 1)
         out << padded("total", layout.labWidth) << "  " << formatPoints(totals.points) << " / "
             << formatPoints(totals.maxPoints) << " points  (" << totals.statuses.describe() << ")\n";
+    if (!next.empty()) out << "next: lab " << next << ", docs/labs/" << next << ".md\n";
     out << "score: " << formatPoints(totals.points) << " / " << formatPoints(totals.maxPoints) << "\n";
 }
 
@@ -379,16 +394,21 @@ void printReport(std::ostream& out, const std::vector<GradeResult>& results, con
     const TableLayout layout = layoutOf(results, totals);
     printHeader(out, layout);
     std::vector<std::string> collapsedShown;
+    std::string next;   // the first lab to start with
     for (const GradeResult& result : results) {
+        if (quietCascade(totals, result)) continue;
         if (!(result.counted && collapsed(totals, result.lab))) {
             printCaseRow(out, layout, result);
         } else if (std::find(collapsedShown.begin(), collapsedShown.end(), result.lab) == collapsedShown.end()) {
             collapsedShown.push_back(result.lab);
-            printCollapsedLab(out, layout, totals, result);
+            const std::string start = labToStartWith(result);
+            const bool first = next.empty() && start == result.lab;
+            if (next.empty()) next = start;
+            printCollapsedLab(out, layout, totals, result, first);
         }
     }
     printDetails(out, layout, results, totals);
-    printTotals(out, layout, totals);
+    printTotals(out, layout, totals, next);
 }
 
 std::string hintLine(const GradeResult& result, std::size_t indent) {

@@ -21,6 +21,9 @@ struct Environment {
     std::filesystem::path binDir;      // the lab programs
     std::ostream& out;                 // the report
     std::ostream& err;                 // notes and progress
+    /// err is a terminal: progress is one line, rewritten in place and cleared
+    /// when the cases are done (a log gets a line per case).
+    bool progressInPlace = false;
 };
 
 struct PlannedLab {
