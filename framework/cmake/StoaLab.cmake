@@ -143,6 +143,26 @@ function(_stoa_lab_program lab target output_dir track_name search_path objects)
   target_link_libraries(${target} PRIVATE stoa)
 endfunction()
 
+# Beside the main track's program, <bin>/labNN_name.sources: the build folder and
+# the compiled student files it was built from (the lab's and those of the labs
+# it uses; GLSL is read at run time). stoa-grade refuses a program older than one
+# of them: the student changed a file and did not rebuild.
+function(_stoa_list_compiled_sources lab uses)
+  string(REGEX REPLACE "^([0-9]+)_.*" "\\1" number ${lab})
+  string(REGEX REPLACE "^[0-9]+_" "" short ${lab})
+  set(text "# Written by framework/cmake/StoaLab.cmake: what bin/lab${number}_${short} is built from.\n")
+  string(APPEND text "build ${CMAKE_BINARY_DIR}\n")
+  foreach(used IN LISTS uses lab)
+    file(GLOB files ${STOA_MAIN_TRACK_DIR}/${used}/${STOA_STUDENT_FOLDER}/*.cpp
+                    ${STOA_MAIN_TRACK_DIR}/${used}/${STOA_STUDENT_FOLDER}/*.hpp)
+    list(SORT files)
+    foreach(file IN LISTS files)
+      string(APPEND text "source ${file}\n")
+    endforeach()
+  endforeach()
+  _stoa_write_if_changed(${CMAKE_BINARY_DIR}/bin/lab${number}_${short}.sources "${text}")
+endfunction()
+
 function(stoa_add_lab)
   cmake_parse_arguments(ARG "" "NAME" "STUDENT_FILES;APP_SOURCES;USES" ${ARGN})
   set(lab ${ARG_NAME})
@@ -191,6 +211,7 @@ function(stoa_add_lab)
   endforeach()
   _stoa_lab_program(${lab} ${lab} ${CMAKE_BINARY_DIR}/bin ${STOA_MAIN_TRACK_NAME}
                     "${STOA_MAIN_TRACK_DIR};${STOA_ROOT_DIR}/shaders" "${objects}")
+  _stoa_list_compiled_sources(${lab} "${ARG_USES}")
 
   if(ARG_USES AND EXISTS ${STOA_SOLUTIONS_DIR} AND NOT STOA_MAIN_TRACK_NAME STREQUAL "solutions")
     _stoa_cascade_program(${lab} "${ARG_USES}")

@@ -8,7 +8,10 @@
 #include "ReferenceUpdate.hpp"
 #include "TempFolder.hpp"
 
+#include <chrono>
+#include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
 using namespace stoa::grader;
 
@@ -193,4 +196,49 @@ TEST_CASE("findLabs and planLabs read the lab folders", "[grader][cli]") {
         CHECK(message.find("unknown case 'orbit_top'") == 0);
         CHECK(message.find("01_transforms: orbit_front, orbit_side") != std::string::npos);
     }
+}
+
+TEST_CASE("planLabs refuses a lab program older than a student file it was built from", "[grader][cli]") {
+    stoa::test::TempFolder source;
+    source.write("labs/01_transforms/cases.ini", "lab = 01_transforms\ntitle = Transforms\n\n[case orbit_front]\n");
+    source.write("labs/01_transforms/student/transforms.cpp", "// the student's\n");
+    source.write("labs/01_transforms/student/cameras.cpp", "// the student's\n");
+    source.write("bin/lab01_transforms", "#!/bin/sh\nexit 0\n", true);
+    const std::filesystem::path program = source.path() / "bin/lab01_transforms";
+    source.write("bin/lab01_transforms.sources",
+                 "# what bin/lab01_transforms is built from\nbuild " + (source.path() / "build").string() +
+                     "\nsource " + (source.path() / "labs/01_transforms/student/transforms.cpp").string() +
+                     "\nsource " + (source.path() / "labs/01_transforms/student/cameras.cpp").string() + "\n");
+    // Built after both files were written: graded.
+    const auto built = std::filesystem::last_write_time(program);
+    std::filesystem::last_write_time(source.path() / "labs/01_transforms/student/transforms.cpp",
+                                     built - std::chrono::seconds(60));
+    std::filesystem::last_write_time(source.path() / "labs/01_transforms/student/cameras.cpp",
+                                     built - std::chrono::seconds(60));
+    std::ostringstream out, err;
+    Environment env{source.path(), source.path() / "bin", out, err};
+    Options options;
+    CHECK(planLabs(options, env, true).size() == 1);
+
+    // cameras.cpp edited after the build, and not rebuilt: refused, with the command.
+    std::filesystem::last_write_time(source.path() / "labs/01_transforms/student/cameras.cpp",
+                                     built + std::chrono::seconds(5));
+    std::filesystem::path buildDir;
+    const std::vector<std::filesystem::path> newer = staleSources(program, buildDir);
+    REQUIRE(newer.size() == 1);
+    CHECK(newer[0].filename() == "cameras.cpp");
+    CHECK(buildDir == source.path() / "build");
+    try {
+        planLabs(options, env, true);
+        FAIL("a stale program must not be graded");
+    } catch (const std::runtime_error& error) {
+        const std::string message = error.what();
+        CHECK(message.find("would grade your old code") != std::string::npos);
+        CHECK(message.find("lab01_transforms is older than " +
+                           (source.path() / "labs/01_transforms/student/cameras.cpp").string()) != std::string::npos);
+        CHECK(message.find("transforms.cpp") == std::string::npos);
+        CHECK(message.find("cmake --build " + (source.path() / "build").string()) != std::string::npos);
+    }
+    // Planning without running (the mistakes' check plans, then builds its own) does not look.
+    CHECK(planLabs(options, env, false).size() == 1);
 }

@@ -7,9 +7,49 @@
 #include <stoa/core/InputError.hpp>
 
 #include <algorithm>
+#include <fstream>
 #include <map>
+#include <stdexcept>
 
 namespace stoa::grader {
+
+namespace {
+
+// Refuses to grade a program that predates the student's last edit.
+void refuseStalePrograms(const std::vector<PlannedLab>& labs) {
+    std::string message;
+    std::filesystem::path buildDir;
+    for (const PlannedLab& lab : labs) {
+        if (!isExecutable(lab.program)) continue;
+        const std::vector<std::filesystem::path> newer = staleSources(lab.program, buildDir);
+        if (newer.empty()) continue;
+        message += "\n  " + lab.program.string() + " is older than";
+        for (const std::filesystem::path& file : newer) message += " " + file.string();
+        message += " (changed since the last build)";
+    }
+    if (message.empty()) return;
+    const std::string rebuild = buildDir.empty() ? "cmake --build <your build folder>" : "cmake --build " + buildDir.string();
+    throw std::runtime_error("the lab programs are older than your files, so they would grade your old code:" + message +
+                             "\nrebuild first, then grade again:\n  " + rebuild);
+}
+
+} // namespace
+
+std::vector<std::filesystem::path> staleSources(const std::filesystem::path& program, std::filesystem::path& buildDir) {
+    std::vector<std::filesystem::path> newer;
+    std::ifstream list(program.string() + ".sources");
+    std::error_code error;
+    const auto built = std::filesystem::last_write_time(program, error);
+    if (!list || error) return newer;
+    for (std::string line; std::getline(list, line);) {
+        if (line.rfind("build ", 0) == 0) buildDir = line.substr(6);
+        if (line.rfind("source ", 0) != 0) continue;
+        const std::filesystem::path file = line.substr(7);
+        const auto changed = std::filesystem::last_write_time(file, error);
+        if (!error && changed > built) newer.push_back(file);
+    }
+    return newer;
+}
 
 std::vector<PlannedLab> planLabs(const Options& options, const Environment& env, bool requirePrograms) {
     std::vector<LabEntry> labs = selectLabs(findLabs(env.sourceDir), options.labs);
@@ -51,6 +91,7 @@ std::vector<PlannedLab> planLabs(const Options& options, const Environment& env,
         }
         kept.push_back(std::move(lab));
     }
+    if (requirePrograms) refuseStalePrograms(kept);
     return kept;
 }
 

@@ -45,7 +45,16 @@ void addHiddenCases(PlannedLab& lab, const std::filesystem::path& hiddenManifest
 /// `requirePrograms`, a lab with neither its program nor a cascade program built
 /// is left out with a note on `env.err`. Throws UsageError for an unknown
 /// lab or case, InputError for a manifest that does not parse.
+/// The labs to run. With `requirePrograms`, a lab without a program is
+/// skipped with a note, and a program older than a student file it was built
+/// from (staleSources()) stops the run: a std::runtime_error that names the
+/// files and the command that rebuilds.
 std::vector<PlannedLab> planLabs(const Options& options, const Environment& env, bool requirePrograms);
+
+/// The compiled student files newer than `program`, from the list its build
+/// wrote beside it (<program>.sources, framework/cmake/StoaLab.cmake); none
+/// when there is no list. `buildDir` gets the build folder the list names.
+std::vector<std::filesystem::path> staleSources(const std::filesystem::path& program, std::filesystem::path& buildDir);
 
 /// One job per selected case of `lab`, run by `program`, each in its own folder
 /// <workDir>/<lab>/<case>. Each job passes the program --cases <the manifest the
