@@ -25,14 +25,16 @@
 
 namespace {
 
+// The usage: asked for (--help, problem nullptr) on stdout, exit 0; after a
+// problem on stderr, exit 2.
 int usage(const char* problem) {
     if (problem) std::fprintf(stderr, "stoa-crowds: %s\n", problem);
-    std::fprintf(stderr,
+    std::fprintf(problem ? stderr : stdout,
                  "usage: stoa-crowds WORLD.xml [--steps N] [--view top|camera] [--trails on|off]\n"
                  "                   [--screenshot FILE | --render FILE [--backend osmesa|egl]]\n"
                  "       stoa-crowds --make-maps DIR\n"
                  "Runs a crowd world (docs/crowds-xml.md) in a window, or saves one picture of it.\n");
-    return 2;
+    return problem ? 2 : 0;
 }
 
 bool isNumber(const std::string& text) {
@@ -56,7 +58,9 @@ int main(int argc, char** argv) {
             return 1;
         }
     }
-    if (args.empty() || args[0].empty() || args[0][0] == '-') return usage(args.empty() ? nullptr : "the first argument is the world file");
+    if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) return usage(nullptr);
+    if (args.empty() || args[0].empty() || args[0][0] == '-')
+        return usage(args.empty() ? "the first argument is the world file (none given)" : "the first argument is the world file");
     std::filesystem::path world = args[0];
     std::error_code error;
     if (!std::filesystem::exists(world, error) && world.parent_path().empty())
@@ -93,5 +97,6 @@ int main(int argc, char** argv) {
           << "\ncamera = orbit\ntarget = 0 0 0\ndistance = 34\nyaw = 20\npitch = 40\nfar = 200\n";
     if (!trails.empty()) cases << "trails = " << trails << "\n";
     stoa::CrowdApp app;
-    return stoa::runLabOnCase(app, STOA_LAB_BUILD_INFO, argv[0], cases.str(), "world", forwarded);
+    return stoa::runLabOnCase(app, STOA_LAB_BUILD_INFO, argv[0], "Stoa crowds -- " + world.filename().string(), cases.str(),
+                              "world", forwarded);
 }

@@ -29,13 +29,15 @@
 
 namespace {
 
+// The usage: asked for (--help, problem empty) on stdout, exit 0; after a
+// problem on stderr, exit 2.
 int usage(const std::string& problem) {
     if (!problem.empty()) std::fprintf(stderr, "stoa-editor: %s\n", problem.c_str());
-    std::fprintf(stderr,
+    std::fprintf(problem.empty() ? stdout : stderr,
                  "usage: stoa-editor SCENE.json [--size WxH] [--screenshot FILE | --render FILE [--backend osmesa|egl]]\n"
                  "       stoa-editor --scene NAME ...   (a scene of assets/scenes/ by its name; --scene showcase: every lab at once)\n"
                  "Edits a scene file (docs/scene-files.md) in a window, or saves one picture of it.\n");
-    return 2;
+    return problem.empty() ? 0 : 2;
 }
 
 } // namespace
@@ -53,7 +55,10 @@ int main(int argc, char** argv) {
         args[0] = named.string();
     }
     if (args.empty() || args[0].empty() || args[0][0] == '-')
-        return usage(args.empty() ? "" : (args[0] == "--help" ? "" : "the first argument is the scene file"));
+        return usage(!args.empty() && (args[0] == "--help" || args[0] == "-h")
+                         ? ""
+                         : args.empty() ? "the first argument is the scene file (none given)"
+                                        : "the first argument is the scene file");
     std::filesystem::path scene = args[0];
     if (!std::filesystem::exists(scene, error) && scene.parent_path().empty())
         scene = stoa::paths::assetsDir() / "scenes" / scene;
@@ -100,5 +105,6 @@ int main(int argc, char** argv) {
     stoa::EditorLabApp app;
     app.soundInWindow = std::find(forwarded.begin(), forwarded.end(), "--render") == forwarded.end() &&
                         std::find(forwarded.begin(), forwarded.end(), "--screenshot") == forwarded.end();
-    return stoa::runLabOnCase(app, STOA_LAB_BUILD_INFO, argv[0], cases.str(), "scene", forwarded);
+    return stoa::runLabOnCase(app, STOA_LAB_BUILD_INFO, argv[0], "Stoa editor -- " + scene.filename().string(), cases.str(),
+                              "scene", forwarded);
 }

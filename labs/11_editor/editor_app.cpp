@@ -191,7 +191,7 @@ bool EditorLabApp::keyPressed(unsigned char key) {
         return true;
     case 'v':
         m_view = m_view == View::Shaded ? View::Stencil : View::Shaded;
-        std::printf("view: %s\n", m_view == View::Shaded ? "shaded" : "stencil");
+        log(m_view == View::Shaded ? "view: shaded" : "view: stencil");
         return true;
     default: return false;
     }
@@ -221,9 +221,10 @@ bool EditorLabApp::handleEvent(const InputEvent& event) {
             m_history.endMerge();
             m_dragAxis = -1;
             if (const EditorObject* object = m_scene.findObject(m_selected)) {
-                std::printf("moved %s to (%.3f, %.3f, %.3f)\n", object->name.c_str(), object->position.x,
-                            object->position.y, object->position.z);
-                std::fflush(stdout);
+                char line[200];
+                std::snprintf(line, sizeof line, "moved %s to (%.3f, %.3f, %.3f)", object->name.c_str(),
+                              object->position.x, object->position.y, object->position.z);
+                log(line);
             }
             return true;
         }
@@ -245,8 +246,12 @@ bool EditorLabApp::quitRequested() {
 void EditorLabApp::drawUi() {
 #ifdef STOA_EDITOR_APP_IMGUI
     ImGui::Text("%s", m_sceneFile.empty() ? "lab 11's scene" : m_sceneFile.filename().string().c_str());
-    ImGui::Text("%zu objects, %zu lights; %zu edits to undo, %zu to redo", m_scene.objects.size(), m_scene.lights.size(),
-                m_history.undoCount(), m_history.redoCount());
+    const auto counted = [](std::size_t n, const char* one, const char* many) {
+        return std::to_string(n) + " " + (n == 1 ? one : many);
+    };
+    ImGui::Text("%s, %s; %s to undo, %zu to redo", counted(m_scene.objects.size(), "object", "objects").c_str(),
+                counted(m_scene.lights.size(), "light", "lights").c_str(),
+                counted(m_history.undoCount(), "edit", "edits").c_str(), m_history.redoCount());
     if (ImGui::Button("Undo (u)")) keyPressed('u');
     ImGui::SameLine();
     if (ImGui::Button("Redo (r)")) keyPressed('r');

@@ -147,6 +147,7 @@ void EditorLabApp::deleteSelection() {
                                 },
                                 ""});
     m_selected = 0;
+    log("deleted " + copy.name + " (u undoes it)");
 }
 
 void EditorLabApp::startDrag(glm::vec2 pixel) {

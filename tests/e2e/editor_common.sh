@@ -39,10 +39,9 @@ wait_for_count() {
 shots=0
 screenshot() {
   shots=$((shots + 1))
-  rm -f "$work/lab11_editor-screenshot.png"
   xdotool key F12
-  wait_for_count "^saved lab11_editor-screenshot.png$" "$shots" "F12 saved no screenshot (number $shots)"
-  mv "$work/lab11_editor-screenshot.png" "$1"
+  wait_for_count "^saved .*/screenshots/[a-z0-9_-]+-[0-9]+\.png$" "$shots" "F12 saved no screenshot (number $shots)"
+  mv "$(grep -E "^saved .*/screenshots/[a-z0-9_-]+-[0-9]+\.png$" "$work/stdout.txt" | sed -n "${shots}p" | cut -c7-)" "$1"
 }
 
 measure_frame() {

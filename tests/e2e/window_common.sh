@@ -34,12 +34,12 @@ start_lab_window() {
   trap 'kill "$pid" 2>/dev/null || true' EXIT
   window=
   for _ in $(seq 1 100); do
-    window=$(xdotool search --onlyvisible --name "Stoa lab" 2>/dev/null | head -n 1 || true)
+    window=$(xdotool search --onlyvisible --name "^Stoa (lab|editor|crowds) " 2>/dev/null | head -n 1 || true)
     [ -n "$window" ] && break
     kill -0 "$pid" 2>/dev/null || fail "the program ended before its window opened"
     sleep 0.1
   done
-  [ -n "$window" ] || fail "no window titled 'Stoa lab' appeared within 10 s"
+  [ -n "$window" ] || fail "no window titled 'Stoa lab ...', 'Stoa editor -- ...' or 'Stoa crowds -- ...' appeared within 10 s"
   xdotool windowfocus --sync "$window"
 }
 

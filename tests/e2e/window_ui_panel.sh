@@ -12,19 +12,21 @@ source "$(dirname "$0")/window_common.sh"   # Xvfb, fail, start_lab_window
 
 cd "$work"
 name=$(basename "$program")
-shot="$name-screenshot.png"
-rm -f "$shot" before.png after.png
+rm -rf screenshots before.png after.png
 start_lab_window
 sleep 0.5
 
-# save NAME COUNT: F12, then wait for the COUNT-th "saved" line.
+# save NAME COUNT: F12, then wait for the COUNT-th "saved" line, which names
+# screenshots/PROGRAM-N.png under the current folder (N the first number free).
 save() {
+  local shot=""
   xdotool key F12
   for _ in $(seq 1 100); do
-    [ -f "$shot" ] && [ "$(grep -c "^saved $shot" stdout.txt)" -ge "$2" ] && break
+    shot=$(grep -E "^saved $work/screenshots/$name-[0-9]+\.png\$" stdout.txt | sed -n "$2p" | cut -c7- || true)
+    [ -n "$shot" ] && [ -f "$shot" ] && break
     sleep 0.1
   done
-  [ -f "$shot" ] || fail "F12 saved no $shot"
+  [ -n "$shot" ] && [ -f "$shot" ] || fail "F12 saved no screenshots/$name-N.png (number $2)"
   mv "$shot" "$1"
 }
 save before.png 1

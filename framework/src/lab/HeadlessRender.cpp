@@ -1,5 +1,7 @@
 #include "HeadlessRender.hpp"
 
+#include "ProgramName.hpp"
+
 #include <stoa/gl/Debug.hpp>
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/Program.hpp>
@@ -50,7 +52,7 @@ int runChecks(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, c
         if (!spec.check.empty() && (options.check == "all" || spec.name == options.check)) selected.push_back(&spec);
     if (selected.empty() && options.check == "all") {
         // `--check all` on a lab without checks: nothing to run is not an error.
-        std::printf("lab%s has no property checks\n", info.name);
+        std::printf("%s has no property checks\n", programName(info).c_str());
         return kExitOk;
     }
     if (selected.empty()) {

@@ -5,6 +5,7 @@
 #include "HeadlessRender.hpp"
 #include "LabCommandLine.hpp"
 #include "LabWindow.hpp"
+#include "ProgramName.hpp"
 
 #include <stoa/core/InputError.hpp>
 #include <stoa/core/NotImplemented.hpp>
@@ -47,7 +48,7 @@ int runOnManifest(Lab& lab, const LabBuildInfo& info, const LabManifest& manifes
     }
     if (!options.check.empty()) return runChecks(lab, info, manifest, options);
     if (!options.renderCase.empty() && !manifest.find(options.renderCase)) {
-        std::fprintf(stderr, "lab%s: no case '%s' (cases: %s)\n", info.name, options.renderCase.c_str(),
+        std::fprintf(stderr, "%s: no case '%s' (cases: %s)\n", programName(info).c_str(), options.renderCase.c_str(),
                      manifest.caseNames().c_str());
         return kExitUsage;
     }
@@ -68,10 +69,10 @@ int reportingFailures(const LabBuildInfo& info, Body&& body) {
         std::fprintf(stderr, "%s\n", notImplementedLine(stub.what()).c_str());
         return kExitNotAttempted;
     } catch (const InputError& error) {
-        std::fprintf(stderr, "lab%s: %s\n", info.name, error.what());
+        std::fprintf(stderr, "%s: %s\n", programName(info).c_str(), error.what());
         return kExitError;
     } catch (const std::exception& error) {
-        std::fprintf(stderr, "lab%s: %s\n", info.name, error.what());
+        std::fprintf(stderr, "%s: %s\n", programName(info).c_str(), error.what());
         return kExitError;
     }
 }
@@ -84,7 +85,7 @@ int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv) {
         try {
             options = parseOptions(argc, argv);
         } catch (const InputError& error) {
-            std::fprintf(stderr, "lab%s: %s\n", info.name, error.what());
+            std::fprintf(stderr, "%s: %s\n", programName(info).c_str(), error.what());
             printUsage(info, stderr);
             return kExitUsage;
         }
@@ -105,8 +106,12 @@ int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv) {
     });
 }
 
-int runLabOnCase(Lab& lab, const LabBuildInfo& info, const std::string& program, const std::string& cases,
-                 const std::string& caseName, const std::vector<std::string>& options) {
+int runLabOnCase(Lab& lab, const LabBuildInfo& labInfo, const std::string& program, const std::string& title,
+                 const std::string& cases, const std::string& caseName, const std::vector<std::string>& options) {
+    const std::string name = std::filesystem::path(program).filename().string();
+    LabBuildInfo info = labInfo;
+    info.programName = name.c_str();
+    info.windowTitle = title.c_str();
     // The tool's flags, as the lab's command line spells them (argv also goes
     // to the window toolkit).
     std::vector<std::string> args{program};
@@ -126,7 +131,7 @@ int runLabOnCase(Lab& lab, const LabBuildInfo& info, const std::string& program,
     const int argc = static_cast<int>(args.size());
     return reportingFailures(info, [&]() -> int {
         const Options parsed = parseOptions(argc, argv.data());
-        const LabManifest manifest = parseManifest(cases, std::filesystem::path(program).filename().string() + "'s case");
+        const LabManifest manifest = parseManifest(cases, name + "'s case");
         return runOnManifest(lab, info, manifest, parsed, argc, argv.data());
     });
 }

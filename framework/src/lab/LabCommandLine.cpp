@@ -1,5 +1,7 @@
 #include "LabCommandLine.hpp"
 
+#include "ProgramName.hpp"
+
 #include <stoa/core/InputError.hpp>
 
 #include <sstream>
@@ -8,16 +10,17 @@ namespace stoa::detail {
 
 void printUsage(const LabBuildInfo& info, std::FILE* to) {
     std::fprintf(to,
-                 "usage: lab%s [--case NAME] [--view live|yours|reference|difference] [--screenshot FILE]\n"
-                 "       lab%s --render NAME --output FILE.png [--backend osmesa|egl]\n"
-                 "       lab%s --check NAME|all [--backend osmesa|egl]\n"
-                 "       lab%s --list | --list-checks | --info | --help\n"
+                 "usage: %s [--case NAME] [--view live|yours|reference|difference] [--screenshot FILE]\n"
+                 "       %s --render NAME --output FILE.png [--backend osmesa|egl]\n"
+                 "       %s --check NAME|all [--backend osmesa|egl]\n"
+                 "       %s --list | --list-checks | --info | --help\n"
                  "Any of them takes --cases FILE.ini: the cases from that manifest instead of the lab's\n"
                  "cases.ini (the grader's hidden cases).\n\n"
                  "Without --render or --check the lab opens a window; see docs/labs/%s.md.\n"
                  "Exit status: 0 done, 1 error, 2 bad command line, 3 not attempted (a stub is in place),\n"
                  "4 a property check does not hold.\n",
-                 info.name, info.name, info.name, info.name, info.name);
+                 programName(info).c_str(), programName(info).c_str(), programName(info).c_str(),
+                 programName(info).c_str(), info.name);
 }
 
 Options parseOptions(int argc, char** argv) {

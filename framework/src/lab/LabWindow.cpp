@@ -2,6 +2,7 @@
 
 #include "CaseComparison.hpp"
 #include "HeadlessRender.hpp"
+#include "ProgramName.hpp"
 
 #include <stoa/app/ImGuiLayer.hpp>
 #include <stoa/app/Window.hpp>
@@ -22,12 +23,25 @@
 #include <cfloat>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <set>
 
 namespace stoa::detail {
 
 namespace {
+
+// screenshots/NAME-N.png under the current folder, N the first number not yet
+// taken (a second F12 never overwrites the first); the folder made if need be.
+std::filesystem::path nextScreenshotPath(const std::string& name) {
+    const std::filesystem::path folder = std::filesystem::absolute("screenshots");
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    for (int n = 1;; ++n) {
+        const std::filesystem::path file = folder / (name + "-" + std::to_string(n) + ".png");
+        if (!std::filesystem::exists(file, error)) return file;
+    }
+}
 
 // A picture shown at about its size: no mipmaps, clamped.
 TextureOptions pictureOptions() {
@@ -63,16 +77,16 @@ public:
         }
         if (m_screenshotRequested) {
             m_screenshotRequested = false;
-            const std::string file = std::string("lab") + m_info.name + "-screenshot.png";
-            saveScreenshot(size, file);
-            std::printf("saved %s\n", file.c_str());
+            const std::filesystem::path file = nextScreenshotPath(programName(m_info));
+            saveScreenshot(size, file.string());
+            std::printf("saved %s\n", file.string().c_str());
             std::fflush(stdout);
         }
     }
 
     // Every event goes to the UI panel first (when shown), then to the lab;
     // what the panel or the lab takes, the app leaves alone (but Escape quits). F1 shows the panel, F12 saves the
-    // window as labNN_name-screenshot.png in the current folder.
+    // window as screenshots/labNN_name-N.png under the current folder (git ignores screenshots/).
     void event(const InputEvent& event, const InputState&) override {
         m_uiTookEvent = false;
         // F1 and F12 are the app's even while a panel's text field has the keyboard.
@@ -102,7 +116,7 @@ public:
         // At least 280 x 120, and as large as what the lab adds (drawUi()) needs.
         ImGui::SetNextWindowSizeConstraints(ImVec2(280.0f, 120.0f), ImVec2(FLT_MAX, FLT_MAX));
         ImGui::Begin("Stoa", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-        ImGui::Text("lab %s (%s)", m_info.name, m_info.track);
+        ImGui::Text("%s (%s)", programName(m_info).c_str(), m_info.track);
         ImGui::Text("case %s", m_pictures[m_caseIndex]->name.c_str());
         ImGui::Text("%.1f ms per frame", 1000.0f / std::max(ImGui::GetIO().Framerate, 1.0f));
         runStudentCode([&] { m_lab.drawUi(); });   // a stub there leaves the panel whole
@@ -171,22 +185,22 @@ public:
     }
 
     void printHelp() const {
-        std::printf("Lab %s (%s track)\n"
+        std::printf("%s (%s track)\n"
                     "  mouse        orbit: left tumble, middle or Shift+left track, right or Ctrl+left dolly, wheel dolly\n"
                     "               first person: hold right and drag to look\n"
                     "  W A S D      walk (first person); Space up, C or Ctrl down, Shift faster\n"
                     "  Tab          switch orbit / first-person camera\n"
                     "  1..9         jump to a graded case's view\n"
                     "  g            the case as the grader sees it: yours, the reference, the difference, back\n"
-                    "  F1           the UI panel;  F12 save the window as lab%s-screenshot.png\n"
+                    "  F1           the UI panel;  F12 save the window in screenshots/%s-N.png\n"
                     "  h            this help;  Esc quit\n"
                     "  Shaders reload by themselves when you save them.\n",
-                    m_info.name, m_info.track, m_info.name);
+                    programName(m_info).c_str(), m_info.track, programName(m_info).c_str());
         for (const std::string& line : m_lab.keyHelp()) std::printf("  %s\n", line.c_str());
         for (std::size_t i = 0; i < m_pictures.size() && i < 9; ++i)
             std::printf("  case %zu: %s\n", i + 1, m_pictures[i]->name.c_str());
         if (m_pictures.size() < m_manifest.cases.size())
-            std::printf("  property checks (no picture): lab%s --check all\n", m_info.name);
+            std::printf("  property checks (no picture): %s --check all\n", programName(m_info).c_str());
     }
 
     int exitCode() const { return m_exitCode; }
@@ -214,7 +228,7 @@ private:
         }
         static const char* const names[] = {"live", "yours", "reference", "difference"};
         std::printf("view: %s\n", names[static_cast<int>(m_view)]);
-        m_window.setTitle(std::string("Stoa lab ") + m_info.name + " -- " + names[static_cast<int>(m_view)] +
+        m_window.setTitle(windowTitle(m_info) + " -- " + names[static_cast<int>(m_view)] +
                           (m_view == View::Live ? "" : " -- case " + m_pictures[m_caseIndex]->name));
     }
 
@@ -311,7 +325,7 @@ private:
         reportOnce(m_inputProblem);
         if (status == m_status) return;
         m_status = status;
-        m_window.setTitle(std::string("Stoa lab ") + m_info.name + (status.empty() ? "" : " -- " + status));
+        m_window.setTitle(windowTitle(m_info) + (status.empty() ? "" : " -- " + status));
     }
 
     void reportOnce(const std::string& problem) {
@@ -381,7 +395,7 @@ int runWindow(Lab& lab, const LabBuildInfo& info, const LabManifest& manifest, c
                          "case '" + first.name + "' is a property check, with no picture: run it with --check " +
                              first.name);
     WindowOptions windowOptions;
-    windowOptions.title = std::string("Stoa lab ") + info.name;
+    windowOptions.title = windowTitle(info);
     if (!options.screenshot.empty()) {
         windowOptions.width = first.width;    // the screenshot matches the headless render
         windowOptions.height = first.height;

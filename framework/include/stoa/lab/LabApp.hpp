@@ -38,10 +38,10 @@ int runLab(Lab& lab, const LabBuildInfo& info, int argc, char** argv);
 /// the case `caseName` of the manifest text `cases`, parsed in memory (no file
 /// is written). `options` are the tool's own flags for it: `--render FILE` (the
 /// case's picture, headless), `--screenshot FILE`, `--backend NAME`; without
-/// --render the case opens in a window. `program` names the tool in messages
-/// and as argv[0].
-int runLabOnCase(Lab& lab, const LabBuildInfo& info, const std::string& program, const std::string& cases,
-                 const std::string& caseName, const std::vector<std::string>& options);
+/// --render the case opens in a window. `program` is argv[0]: its file name
+/// names the tool in messages; `title` is the window's ("Stoa editor -- FILE").
+int runLabOnCase(Lab& lab, const LabBuildInfo& info, const std::string& program, const std::string& title,
+                 const std::string& cases, const std::string& caseName, const std::vector<std::string>& options);
 
 } // namespace stoa
 

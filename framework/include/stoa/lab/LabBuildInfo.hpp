@@ -16,6 +16,11 @@ struct LabBuildInfo {
     /// comparison ('g'); "" when the build has none. The build decides
     /// (STOA_REFERENCES_DIR), so the framework never names the grader's folders.
     const char* referenceDirectory = "";
+    /// A tool built on the lab's app (stoa-editor, stoa-crowds) names itself:
+    /// in messages (nullptr: "labNN_name") and in the window's title (nullptr:
+    /// "Stoa lab NN_name"). runLabOnCase() sets both.
+    const char* programName = nullptr;
+    const char* windowTitle = nullptr;
 };
 
 /// This program's build info (the generated definition).
