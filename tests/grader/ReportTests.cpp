@@ -202,7 +202,9 @@ TEST_CASE("a lab that waits for an earlier lab's stub points to that lab", "[gra
     std::ostringstream out;
     printReport(out, results, summarize(results));
     const std::string text = out.str();
-    CHECK(text.find("waits for lab 01_transforms (OrbitCamera::eyePosition() is a stub there)\n") != std::string::npos);
+    // Lab 01 has no line here to name its stub: lab 07's does, on a line of its own when it does not fit.
+    CHECK(text.find("waits for lab 01_transforms") != std::string::npos);
+    CHECK(text.find("OrbitCamera::eyePosition() is a stub there\n") != std::string::npos);
     CHECK(text.find("start with docs/labs/06_culling.md") != std::string::npos);
     CHECK(text.find("start with docs/labs/07_picking.md") == std::string::npos);
     // Lab 01 is not in this report: the next step is still where lab 07 waits.

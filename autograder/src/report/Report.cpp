@@ -268,9 +268,17 @@ void printCollapsedLab(std::ostream& out, const TableLayout& layout, const Total
     const std::string first = labToStartWith(result);
     const std::string stub = stubNamed(result.reason);
     if (first != result.lab) {
+        // The stub where it fits; else on a line of its own, unless the lab
+        // waited for has its own line in this report, which names its stub.
         const std::string which = stub.empty() ? "" : " (" + stub + " is a stub there)";
         const bool fits = layout.rowStart() + 17 + first.size() + which.size() <= kLineWidth;
         out << "  waits for lab " << first << (fits ? which : "") << "\n";
+        const bool shown = std::any_of(totals.labs.begin(), totals.labs.end(),
+                                       [&](const LabTotals& entry) { return entry.lab == first; });
+        if (!fits && !shown && !stub.empty())
+            for (const std::string& line : wrapped(stub + " is a stub there", kLineWidth, layout.labWidth + 2,
+                                                   std::min(layout.rowStart(), kLineWidth / 2)))
+                out << line << "\n";
         return;
     }
     out << "  start with docs/labs/" << result.lab << ".md\n";
