@@ -11,6 +11,7 @@
 
 #include <stoa/core/InputError.hpp>
 
+#include <chrono>
 #include <fstream>
 #include <iterator>
 
@@ -80,11 +81,11 @@ TEST_CASE("render times: a bad line names the file and the line", "[grader][time
     }
 }
 
-TEST_CASE("a program that hangs pays its case's limit once, then the short limit, then is not run",
+TEST_CASE("a program that hangs pays its case's limit once, then the short limit three times, then is not run",
           "[grader][timeouts][isolation]") {
     stoa::test::TempFolder folder("hanging");
     std::vector<CaseJob> jobs;
-    for (int i = 0; i < 5; ++i) {
+    for (int i = 0; i < 6; ++i) {
         CaseJob job = stoa::test::hostileJob("infinite_loop", folder.path() / "references",
                                              folder.path() / ("work" + std::to_string(i)));
         job.timeouts.first = 1.5;
@@ -94,17 +95,21 @@ TEST_CASE("a program that hangs pays its case's limit once, then the short limit
     RunSettings settings;
     settings.caseTimeouts = true;
     std::vector<GradeResult> results = gradeCases(jobs, settings, 1);
-    REQUIRE(results.size() == 5);
+    REQUIRE(results.size() == 6);
     using Catch::Matchers::Contains;
     using Catch::Matchers::Equals;
     using Catch::Matchers::StartsWith;
-    CHECK_THAT(results[0].reason, Equals("timed out after 1.5 s"));
-    CHECK_THAT(results[1].reason, StartsWith("timed out after 0.5 s"));
-    CHECK_THAT(results[1].reason, Contains("timed out on an earlier case"));
-    CHECK_THAT(results[2].reason, StartsWith("timed out after 0.5 s"));
-    static_assert(kMaxTimeoutsInARow == 3, "the cases below expect three timeouts before the rest is skipped");
-    for (int i = 3; i < 5; ++i) {
-        CHECK_THAT(results[i].reason, StartsWith("not run: the program timed out on 3 cases in a row"));
+    // Busy all along: too slow (or endless), never "waiting".
+    CHECK_THAT(results[0].reason, StartsWith("too slow: still computing when its limit of 1.5 s ran out ("));
+    CHECK(results[0].busyWhenStopped);
+    for (int i = 1; i < 4; ++i) {
+        CHECK_THAT(results[i].reason, StartsWith("too slow: still computing when its limit of 0.5 s ran out"));
+        CHECK_THAT(results[i].reason, Contains("the short limit: the program timed out on an earlier case"));
+    }
+    static_assert(kMaxTimeoutsInARow == 3, "the cases below expect three short-limit timeouts before the rest is skipped");
+    for (int i = 4; i < 6; ++i) {
+        CHECK_THAT(results[i].reason, StartsWith("not run: after a first timeout the program ran out of the short "
+                                                 "limit on 3 cases in a row, still computing"));
         CHECK_FALSE(results[i].timedOut);
         CHECK(results[i].seconds == 0.0);
         CHECK(results[i].maxPoints == 1);
@@ -115,7 +120,7 @@ TEST_CASE("a program that hangs pays its case's limit once, then the short limit
     }
 
     // A case that finishes in time breaks the streak: hang, hang, answer, hang, hang all run.
-    std::vector<CaseJob> mixed = jobs;
+    std::vector<CaseJob> mixed(jobs.begin(), jobs.begin() + 5);
     mixed[2].spec.name = "good";
     for (std::size_t i = 0; i < mixed.size(); ++i) mixed[i].workDir = folder.path() / ("mixed" + std::to_string(i));
     results = gradeCases(mixed, settings, 1);
@@ -129,5 +134,69 @@ TEST_CASE("a program that hangs pays its case's limit once, then the short limit
     settings.limits = defaultLimits(0.5);
     jobs.resize(4);
     results = gradeCases(jobs, settings, 1);
-    for (const GradeResult& result : results) CHECK_THAT(result.reason, Equals("timed out after 0.5 s"));
+    for (const GradeResult& result : results)
+        CHECK_THAT(result.reason, StartsWith("too slow: still computing when its limit of 0.5 s ran out"));
+}
+
+TEST_CASE("slow is not a hang: a program too slow on its first cases keeps the cases it finishes in time",
+          "[grader][timeouts][isolation]") {
+    // Lab 07 with a BVH that never splits: its three ray-cast cases come first
+    // and run far past their limit; its other cases finish in time. Only the
+    // ray-cast cases may be lost.
+    stoa::test::TempFolder folder("slow-first");
+    std::vector<CaseJob> jobs;
+    for (const char* name : {"infinite_loop", "infinite_loop", "infinite_loop", "good", "good", "good"}) {
+        CaseJob job = stoa::test::hostileJob(name, folder.path() / "references",
+                                             folder.path() / ("work" + std::to_string(jobs.size())));
+        job.timeouts.first = 1.5;
+        job.timeouts.afterTimeout = 0.5;
+        jobs.push_back(job);
+    }
+    RunSettings settings;
+    settings.caseTimeouts = true;
+    const std::vector<GradeResult> results = gradeCases(jobs, settings, 1);
+    REQUIRE(results.size() == 6);
+    for (int i = 0; i < 3; ++i) {
+        CHECK(results[i].timedOut);
+        CHECK_THAT(results[i].reason, Catch::Matchers::StartsWith("too slow: still computing"));
+    }
+    for (int i = 3; i < 6; ++i) {
+        INFO(results[i].reason);
+        CHECK(results[i].status == GradeStatus::Passed);
+    }
+}
+
+TEST_CASE("a hanging lab costs at most 30 s to grade with its real limits, busy or waiting", "[grader][timeouts][isolation]") {
+    // Eight cases whose solution renders in 0.5 s (a limit of 15 s, 5 s once
+    // the program has timed out), graded with two jobs as stoa-grade does:
+    // four spin, four sleep. The first two pay the full limit, three more the
+    // short one, and the rest are not run. The waiting ones say so.
+    stoa::test::TempFolder folder("hang-budget");
+    std::vector<CaseJob> jobs;
+    for (int i = 0; i < 8; ++i) {
+        CaseJob job = stoa::test::hostileJob(i % 2 ? "sleep_forever" : "infinite_loop", folder.path() / "references",
+                                             folder.path() / ("work" + std::to_string(i)));
+        job.timeouts = caseTimeouts(0.5, false);
+        jobs.push_back(job);
+    }
+    REQUIRE(jobs[0].timeouts.first == kTimeoutFloorSeconds);
+    REQUIRE(jobs[0].timeouts.afterTimeout == kShortTimeoutFloorSeconds);
+    RunSettings settings;
+    settings.caseTimeouts = true;
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<GradeResult> results = gradeCases(jobs, settings, 2);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    CHECK(seconds <= 30.0);
+    int notRun = 0;
+    for (const GradeResult& result : results) {
+        INFO(result.caseName << ": " << result.reason);
+        CHECK(result.status == GradeStatus::Error);
+        if (result.reason.rfind("not run:", 0) == 0) ++notRun;
+        else if (result.caseName == "sleep_forever")
+            CHECK_THAT(result.reason, Catch::Matchers::Contains("without computing") &&
+                                          Catch::Matchers::Contains("(a hang)"));
+        else
+            CHECK_THAT(result.reason, Catch::Matchers::StartsWith("too slow: still computing"));
+    }
+    CHECK(notRun >= 2);
 }

@@ -165,7 +165,7 @@ TEST_CASE("hostile lab programs: each misdeed fails its case with a clear reason
     using Catch::Matchers::StartsWith;
     CHECK_THAT(reasonOf("segfault"), StartsWith("crashed with SIGSEGV"));
     CHECK_THAT(reasonOf("abort"), StartsWith("crashed with SIGABRT"));
-    CHECK_THAT(reasonOf("infinite_loop"), Equals("timed out after 6 s"));
+    CHECK_THAT(reasonOf("infinite_loop"), StartsWith("too slow: still computing when its limit of 6 s ran out ("));
     CHECK_THAT(reasonOf("memory_bomb"), Contains("bad_alloc"));
     CHECK_THAT(reasonOf("fork_bomb"), Contains("started more than"));
     CHECK_THAT(reasonOf("uncaught_exception"), Contains("a student's bug"));

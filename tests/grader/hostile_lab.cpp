@@ -307,6 +307,8 @@ int main(int argc, char** argv) {
     if (name == "infinite_loop")
         for (volatile unsigned spin = 0;; spin = spin + 1) {
         }
+    if (name == "sleep_forever")   // waits for something that never comes: no processor time
+        for (;;) std::this_thread::sleep_for(std::chrono::seconds(60));
     if (name == "memory_bomb") return memoryBomb();
     if (name == "fork_bomb") return forkBomb();
     if (name == "uncaught_exception") throw std::runtime_error("a student's bug");

@@ -2,7 +2,11 @@
 
 #include "Grader.hpp"
 
+#include <filesystem>
+#include <fstream>
+#include <map>
 #include <mutex>
+#include <string>
 
 namespace stoa::grader {
 
@@ -13,6 +17,16 @@ std::vector<CaseJob> jobsOf(const std::vector<CaseOutcome>& outcomes) {
     jobs.reserve(outcomes.size());
     for (const CaseOutcome& outcome : outcomes) jobs.push_back(outcome.job);
     return jobs;
+}
+
+// The lab page's "How fast" section, for a case that was still computing when
+// its limit ran out; "" when the page has none (a pointer is right or absent).
+std::string howFastSection(const std::filesystem::path& sourceDir, const std::string& lab) {
+    const std::filesystem::path page = sourceDir / "docs" / "labs" / (lab + ".md");
+    std::ifstream in(page);
+    for (std::string line; std::getline(in, line);)
+        if (line == "## How fast") return "docs/labs/" + lab + ".md, \"How fast\"";
+    return "";
 }
 
 } // namespace
@@ -51,6 +65,12 @@ std::vector<CaseOutcome> GradingRun::grade(std::vector<CaseOutcome> planned) {
             progress(progressLine(result, done, total, planned[index].label));
         });
     endProgress();
+    std::map<std::string, std::string> howFast;   // lab -> its section, read once
+    for (GradeResult& result : results) {
+        if (!result.busyWhenStopped) continue;
+        if (!howFast.count(result.lab)) howFast[result.lab] = howFastSection(m_env.sourceDir, result.lab);
+        if (!howFast[result.lab].empty()) result.reason += "; how fast it should be: " + howFast[result.lab];
+    }
     for (std::size_t i = 0; i < planned.size(); ++i) planned[i].result = std::move(results[i]);
     return planned;
 }

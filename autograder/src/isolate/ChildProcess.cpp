@@ -207,6 +207,7 @@ struct Watch {
     bool reported = false;          // the namespace's process 1 sent `fromInit`
     bool reportOpen = false;        // its pipe was still open when the watch ended
     int fromInit[2] = {0, 0};       // the program's wait status, the processes it left
+    double cpuSeconds = -1.0;       // at a timeout: the group's processor time
 };
 
 // The child's arguments, limits, environment, namespaces and file sandbox
@@ -255,6 +256,7 @@ Watch watchChild(pid_t pid, int outputFd, int reportFd, bool ownPids, std::size_
         double remaining = limits.timeoutSeconds - secondsSince(start);
         if (remaining <= 0) {
             watch.timedOut = true;
+            watch.cpuSeconds = processGroupCpuSeconds(pid);   // before the kill
             return watch;
         }
         // Wake at least every 25 ms to notice a child that exited while a
@@ -329,6 +331,7 @@ pid_t startChild(const ChildSetup& setup, const std::vector<std::string>& argv, 
 void describeEnding(ProcessOutcome& outcome, const Watch& watch, int status, std::size_t strays) {
     if (watch.timedOut) {
         outcome.ending = ProcessEnding::TimedOut;
+        outcome.cpuSeconds = watch.cpuSeconds;
     } else if (watch.tooManyProcesses) {
         outcome.ending = ProcessEnding::TooManyProcesses;
     } else if (WIFSIGNALED(status)) {

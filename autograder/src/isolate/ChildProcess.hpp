@@ -77,6 +77,11 @@ struct ProcessOutcome {
     bool outputTruncated = false;  // true when `output` left bytes out (a marker line says how many)
     std::string startError;        // why it did not start (FailedToStart only)
     std::size_t strayProcesses = 0;// processes it left running when it ended (all killed); 0 after a timeout
+    double cpuSeconds = -1.0;      // TimedOut: the processor time its processes had used when stopped; -1 unknown
+
+    /// Timed out while computing (processor time at least a quarter of the
+    /// wall time): too slow, or a loop without end; not waiting on anything.
+    bool busyWhenStopped() const { return ending == ProcessEnding::TimedOut && cpuSeconds >= 0.25 * seconds; }
 
     bool exitedWith(int code) const { return ending == ProcessEnding::Exited && exitCode == code; }
     /// One line: "exited with status 1", "crashed with SIGSEGV (segmentation fault)",

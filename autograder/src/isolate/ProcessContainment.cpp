@@ -82,12 +82,17 @@ std::vector<ProcessEntry> processTable() {
         char state = 0;
         long parent = 0;
         long pgrp = 0;
-        if (std::sscanf(close + 1, " %c %ld %ld", &state, &parent, &pgrp) != 3) return;
+        unsigned long user = 0, system = 0;   // fields 14 and 15, in clock ticks
+        const int read = std::sscanf(close + 1, " %c %ld %ld %*d %*d %*d %*u %*u %*u %*u %*u %lu %lu", &state, &parent,
+                                     &pgrp, &user, &system);
+        if (read < 3) return;
         ProcessEntry entry;
         entry.pid = static_cast<pid_t>(std::strtol(pid, nullptr, 10));
         entry.parent = static_cast<pid_t>(parent);
         entry.group = static_cast<pid_t>(pgrp);
         entry.ended = state == 'Z' || state == 'X' || state == 'x';
+        static const double ticks = static_cast<double>(sysconf(_SC_CLK_TCK));
+        if (read == 5 && ticks > 0) entry.cpuSeconds = static_cast<double>(user + system) / ticks;
         table.push_back(entry);
     });
     return table;
@@ -98,6 +103,13 @@ std::size_t processGroupSize(pid_t group) {
     for (const ProcessEntry& entry : processTable())
         if (entry.group == group && !entry.ended) ++members;
     return members;
+}
+
+double processGroupCpuSeconds(pid_t group) {
+    double seconds = 0.0;
+    for (const ProcessEntry& entry : processTable())
+        if (entry.group == group && !entry.ended) seconds += entry.cpuSeconds;
+    return seconds;
 }
 
 int usableCores() {

@@ -21,12 +21,18 @@ std::size_t userTaskCount();
 /// The number of processes whose process group is `group`. Reads /proc.
 std::size_t processGroupSize(pid_t group);
 
+/// The processor time the live processes of process group `group` have used
+/// (user and system, all their threads): how busy a program was when it was
+/// stopped. A program waiting on something uses next to none.
+double processGroupCpuSeconds(pid_t group);
+
 /// One line of the process table, as /proc/<pid>/stat tells it.
 struct ProcessEntry {
     pid_t pid = 0;
     pid_t parent = 0;
     pid_t group = 0;
     bool ended = false;    // a zombie (or dead): it runs no more, but has not been reaped
+    double cpuSeconds = 0.0;   // processor time it has used, user and system
 };
 
 /// Every process this one can see in /proc (threads are not processes).

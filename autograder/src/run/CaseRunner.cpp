@@ -7,6 +7,7 @@
 #include <stoa/image/ImageCompare.hpp>
 #include <stoa/lab/LabProtocol.hpp>
 
+#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <optional>
@@ -23,6 +24,16 @@ std::string sizeText(int width, int height) { return std::to_string(width) + "x"
 // Why a process that did not exit 0 or 3 failed, with its last line of output
 // when that line says more.
 std::string errorReason(const ProcessOutcome& process) {
+    if (process.ending == ProcessEnding::TimedOut && process.cpuSeconds >= 0.0) {
+        char used[32], limit[32];
+        std::snprintf(used, sizeof used, "%.1f", process.cpuSeconds);
+        std::snprintf(limit, sizeof limit, "%g", process.timeoutSeconds);
+        if (process.busyWhenStopped())
+            return std::string("too slow: still computing when its limit of ") + limit +
+                   " s ran out (" + used + " s of processor time: it was not waiting on anything)";
+        return process.describe() + " without computing (" + used +
+               " s of processor time): it waits for something that does not come (a hang)";
+    }
     std::string reason = process.describe();
     if (process.exitedWith(kExitUsage)) reason += " (bad usage)";
     if (process.ending == ProcessEnding::Exited || process.ending == ProcessEnding::Signalled) {
@@ -223,6 +234,7 @@ GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, Reference
     RenderOutcome render = renderCase(job, settings);
     result.seconds = render.process.seconds;
     result.timedOut = render.process.ending == ProcessEnding::TimedOut;
+    result.busyWhenStopped = render.process.busyWhenStopped();
     result.programOutput = render.process.output;
     if (!render.imagePath.empty() && std::filesystem::exists(render.imagePath)) result.renderedImage = render.imagePath;
     if (guard) {

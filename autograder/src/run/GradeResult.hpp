@@ -51,6 +51,7 @@ struct GradeResult {
     Visibility visibility = Visibility::Visible;
     double seconds = 0.0;                  // wall-clock time of the render
     bool timedOut = false;                 // the lab program ran past its time limit and was killed
+    bool busyWhenStopped = false;          // timedOut while computing: too slow, not waiting on anything
     std::string programOutput;             // the lab program's stdout+stderr, truncated to ~4 KB
     std::filesystem::path renderedImage;   // the student's image (empty when none was written)
     std::filesystem::path heatMapImage;    // written for failed cases of the right size

@@ -28,11 +28,13 @@ void forEachInParallel(std::size_t count, int jobs, const std::function<void(std
     for (std::thread& thread : threads) thread.join();
 }
 
-GradeResult notRunAfterTimeouts(const CaseJob& job, int timeoutsInARow) {
+GradeResult notRunAfterTimeouts(const CaseJob& job, int timeoutsInARow, bool busy) {
     GradeResult result = ungradedResult(job);
     result.status = GradeStatus::Error;
-    result.reason = "not run: the program timed out on " + std::to_string(timeoutsInARow) +
-                    " cases in a row, so it hangs; fix the hang and grade again";
+    result.reason = "not run: after a first timeout the program ran out of the short limit on " +
+                    std::to_string(timeoutsInARow) + " cases in a row, " +
+                    (busy ? "still computing (too slow, or a loop that never ends); make it finish and grade again"
+                          : "without computing, so it hangs; fix what it waits for and grade again");
     return result;
 }
 
@@ -45,12 +47,16 @@ std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunS
     ReferenceGuard guard(references);
     std::mutex progressMutex;
     std::size_t done = 0;
-    // A program that has timed out once hangs: its remaining cases get the short
-    // limit, and once it has timed out kMaxTimeoutsInARow times in a row, the rest
-    // of its cases are not run (RenderTimes.hpp).
+    // A program that has timed out once may hang: its remaining cases get the
+    // short limit, and once it has run out of the short limit kMaxTimeoutsInARow
+    // times in a row, the rest of its cases are not run (RenderTimes.hpp). The
+    // timeouts under the case's full limit do not count towards that: a correct
+    // but slow program loses the cases that are too slow, and its next case that
+    // finishes in time ends the streak.
     struct ProgramTimeouts {
         bool any = false;   // it has timed out at least once
-        int inARow = 0;
+        int inARow = 0;     // short-limit timeouts since its last case that finished in time
+        bool busy = false;  // the last of them was still computing
     };
     std::map<std::filesystem::path, ProgramTimeouts> timeouts;
     forEachInParallel(jobs.size(), parallelJobs, [&](std::size_t i) {
@@ -64,7 +70,7 @@ std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunS
                                                                               : jobs[i].timeouts.first);
         }
         if (seen.inARow >= kMaxTimeoutsInARow) {
-            results[i] = notRunAfterTimeouts(jobs[i], seen.inARow);
+            results[i] = notRunAfterTimeouts(jobs[i], seen.inARow, seen.busy);
         } else {
             results[i] = gradeCase(jobs[i], caseSettings, &guard);
             if (seen.any && results[i].timedOut)
@@ -74,8 +80,9 @@ std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunS
         if (settings.caseTimeouts && seen.inARow < kMaxTimeoutsInARow) {
             ProgramTimeouts& program = timeouts[jobs[i].program];
             if (results[i].timedOut) {
+                if (seen.any) ++program.inARow;   // under the short limit
                 program.any = true;
-                ++program.inARow;
+                program.busy = results[i].busyWhenStopped;
             } else {
                 program.inARow = 0;
             }

@@ -33,7 +33,7 @@ std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunS
                                     const ProgressCallback& progress = {});
 
 /// The result of a case that was not run because its program hangs.
-GradeResult notRunAfterTimeouts(const CaseJob& job, int timeoutsInARow);
+GradeResult notRunAfterTimeouts(const CaseJob& job, int timeoutsInARow, bool busy);
 
 /// "[3/12] 01_transforms/orbit_front ... passed (0.8 s)"; a `label` goes before
 /// the case: "[3/12] mistake no_half_vector: 02_shading/sun ... failed (0.6 s)".

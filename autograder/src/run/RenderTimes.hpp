@@ -8,10 +8,14 @@
 //   orbit_front 0.4
 //
 // A case then gets max(kTimeoutFloorSeconds, kTimeoutFactor x that time) before its
-// lab program is killed. Once a program has timed out, it has shown that it hangs,
-// and its remaining cases get max(kShortTimeoutFloorSeconds, kShortTimeoutFactor x
-// the time), so that a hanging lab costs seconds, not a minute per case; after
-// kMaxTimeoutsInARow timeouts in a row, its remaining cases are not run. Builds with
+// lab program is killed. Once a program has timed out it may hang, and its
+// remaining cases get max(kShortTimeoutFloorSeconds, kShortTimeoutFactor x the
+// time), so that a hanging lab costs seconds, not a minute per case; after
+// kMaxTimeoutsInARow timeouts under the short limit in a row (a case that
+// finishes in time ends the streak), its remaining cases are not run. A hanging
+// lab thus costs at most 15 + 3 x 4 s with one job (the default), less with more. The floor of the short
+// limit leaves a correct case room on a loaded machine (lab 07's id_buffer, 0.5 s
+// recorded, took 3 s there). Builds with
 // AddressSanitizer multiply both by kSanitizerSlowdown. A case with no recorded time
 // gets kUnrecordedTimeoutSeconds. `--timeout SECONDS` replaces all of this with one
 // limit for every case. The margins are in docs/instructor-guide.md, "Timeouts".
@@ -24,7 +28,7 @@ namespace stoa::grader {
 
 constexpr double kTimeoutFloorSeconds = 15.0;
 constexpr double kTimeoutFactor = 10.0;
-constexpr double kShortTimeoutFloorSeconds = 2.0;
+constexpr double kShortTimeoutFloorSeconds = 4.0;
 constexpr double kShortTimeoutFactor = 3.0;
 constexpr double kUnrecordedTimeoutSeconds = 30.0;
 constexpr double kSanitizerSlowdown = 4.0;
