@@ -6,7 +6,7 @@
 # The release is the tree without solutions/ (the filled-in labs, the planted
 # mistakes, the hidden cases and their references all live there), without
 # tests/labs/ (they check the solutions against independent implementations of
-# the lab functions, and build only with solutions), without tests/data/out_of_gallery/
+# the lab functions, and build only with solutions), without tests/data/out_of_gallery/ and tests/data/variants/
 # (mistakes outside the gallery: patches of the solutions), without .git and build folders. --classroom adds the GitHub Classroom workflow
 # (autograder/classroom/grade.yml) as .github/workflows/grade.yml. Then, unless --no-verify:
 #   1. no student file in labs/ equals its twin in solutions/, and no line that only
@@ -60,7 +60,7 @@ list_files() {
 count=0
 while IFS= read -r -d '' file; do
   case "$file" in
-    solutions/*|tests/labs/*|tests/data/out_of_gallery/*|.git/*|build*/*|site/*|*/__pycache__/*) continue ;;
+    solutions/*|tests/labs/*|tests/data/out_of_gallery/*|tests/data/variants/*|.git/*|build*/*|site/*|*/__pycache__/*) continue ;;
   esac
   [ -f "$source/$file" ] || continue            # deleted in the work tree
   mkdir -p "$out/$(dirname "$file")"
@@ -72,7 +72,7 @@ if [ "$classroom" -eq 1 ]; then
   cp "$source/autograder/classroom/grade.yml" "$out/.github/workflows/grade.yml"
   count=$((count + 1))
 fi
-echo "make-release: copied $count files into $out (without solutions/, tests/labs/, tests/data/out_of_gallery/, .git, build folders)"
+echo "make-release: copied $count files into $out (without solutions/, tests/labs/, tests/data/out_of_gallery/, tests/data/variants/, .git, build folders)"
 [ "$verify" -eq 1 ] || exit 0
 
 failures=0

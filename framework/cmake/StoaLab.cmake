@@ -15,7 +15,8 @@
 #                                                                         -> build/bin/equivalents/NN_name.NAME/
 #   out of     a mistake kept outside the gallery, test data of stoa-grade --check-hints
 #   gallery    (tests/data/out_of_gallery/NN/mistakes/*.mistake)          -> build/bin/out-of-gallery/NN_name.NAME/
-#   slow       a correct solution far too slow (tests/data/slow/NN/*.equivalent) -> build/bin/slow/NN_name.NAME/
+#   variant    a solution the grader must report in its own words (tests/data/variants/NN/*.equivalent)
+#                                                                         -> build/bin/variants/NN_name.NAME/
 #
 #   stoa_add_lab(NAME 01_transforms
 #                STUDENT_FILES transforms.cpp cameras.cpp   # in student/, C++ and GLSL; twins in solutions/
@@ -257,11 +258,12 @@ function(stoa_add_lab)
     foreach(mistake_file IN LISTS out_of_gallery)
       _stoa_variant_program(${lab} ${mistake_file} probe out-of-gallery "${ARG_USES}")
     endforeach()
-    # Correct solutions that are far too slow (tests/data/slow/NN/*.equivalent):
-    # the grader must tell them from a hang (e2e.slow_is_not_a_hang).
-    file(GLOB slow ${STOA_ROOT_DIR}/tests/data/slow/${lab}/*.equivalent)
-    foreach(slow_file IN LISTS slow)
-      _stoa_variant_program(${lab} ${slow_file} slow slow "${ARG_USES}")
+    # Solutions changed in a way the grader must report as such, not as a wrong
+    # picture (tests/data/variants/NN/*.equivalent): far too slow, not hanging
+    # (e2e.slow_is_not_a_hang); GL state set behind RenderState (e2e.raw_gl_state_named).
+    file(GLOB variants ${STOA_ROOT_DIR}/tests/data/variants/${lab}/*.equivalent)
+    foreach(variant_file IN LISTS variants)
+      _stoa_variant_program(${lab} ${variant_file} variant variants "${ARG_USES}")
     endforeach()
   endif()
 endfunction()

@@ -8,6 +8,7 @@
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/GpuMesh.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/gl/StudentPass.hpp>
 #include "lab05.hpp"
 #include <stoa/scene/MeshObject.hpp>
 #include <stoa/scene/Scene.hpp>
@@ -74,9 +75,11 @@ stoa::CheckResult checkDepthPassBothFaces(const stoa::Program& depthProgram) {
     stoa::Scene scene;
     scene.add(std::make_unique<stoa::MeshObject>(std::make_shared<const stoa::GpuMesh>(stoa::shapes::plane(2.0f, 1))));
 
-    stoa::renderShadowPass(scene, map, depthProgram, fromAbove);
+    // Through runStudentPass(): GL state set behind RenderState is named, not
+    // mistaken for a pass that culls or draws nothing.
+    stoa::runStudentPass("renderShadowPass", [&] { stoa::renderShadowPass(scene, map, depthProgram, fromAbove); });
     const bool front = depthWritten(map);
-    stoa::renderShadowPass(scene, map, depthProgram, fromBelow);
+    stoa::runStudentPass("renderShadowPass", [&] { stoa::renderShadowPass(scene, map, depthProgram, fromBelow); });
     const bool back = depthWritten(map);
     stoa::Framebuffer::bindDefault();
     if (front && back) return stoa::CheckResult::pass("a square leaves its depth in the map with either face towards the light");

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Slow is not a hang: lab 07 with a BVH that never splits (a correct solution,
-# far too slow; tests/data/slow/07_picking/bvh_never_splits.equivalent) loses
+# far too slow; tests/data/variants/07_picking/bvh_never_splits.equivalent) loses
 # its ray-cast cases as "too slow", pointed to the page's "How fast" section,
 # and every other case is graded and passes.
 #   slow_is_not_a_hang.sh STOA_GRADE PROGRAM_DIR WORK_DIR

@@ -38,6 +38,57 @@ void applyStencil(const StencilState& stencil) {
 
 } // namespace
 
+namespace {
+
+bool enabled(GLenum capability) {
+    const GLboolean on = glIsEnabled(capability);
+    STOA_GL_CHECK("glIsEnabled");
+    return on == GL_TRUE;
+}
+
+GLint integer(GLenum name) {
+    GLint value = 0;
+    STOA_GL_CALL(glGetIntegerv(name, &value));
+    return value;
+}
+
+const char* onOff(bool on) { return on ? "on" : "off"; }
+
+// "GL_DEPTH_TEST is enabled (the pass said: off)".
+void compare(std::string& text, const char* name, bool actual, bool wanted) {
+    if (actual == wanted) return;
+    text += std::string(text.empty() ? "" : ", ") + name + (actual ? " is enabled" : " is disabled") +
+            " (the pass said: " + onOff(wanted) + ")";
+}
+
+} // namespace
+
+std::string StateCache::differencesFromGl() const {
+    if (!m_stateKnown) return "";
+    std::string text;
+    compare(text, "GL_DEPTH_TEST", enabled(GL_DEPTH_TEST), m_state.depth.test);
+    GLboolean depthWrite = GL_TRUE;
+    STOA_GL_CALL(glGetBooleanv(GL_DEPTH_WRITEMASK, &depthWrite));
+    if ((depthWrite == GL_TRUE) != m_state.depth.write)
+        text += std::string(text.empty() ? "" : ", ") + "glDepthMask is " + (depthWrite ? "GL_TRUE" : "GL_FALSE") +
+                " (the pass said: depth writes " + onOff(m_state.depth.write) + ")";
+    if (static_cast<GLenum>(integer(GL_DEPTH_FUNC)) != m_state.depth.func)
+        text += std::string(text.empty() ? "" : ", ") + "glDepthFunc was changed";
+    const bool cull = enabled(GL_CULL_FACE);
+    compare(text, "GL_CULL_FACE", cull, m_state.cull != CullMode::None);
+    if (cull && m_state.cull != CullMode::None &&
+        static_cast<GLenum>(integer(GL_CULL_FACE_MODE)) != (m_state.cull == CullMode::Back ? GL_BACK : GL_FRONT))
+        text += std::string(text.empty() ? "" : ", ") + "glCullFace was changed";
+    compare(text, "GL_BLEND", enabled(GL_BLEND), m_state.blend != BlendMode::Opaque);
+    compare(text, "GL_STENCIL_TEST", enabled(GL_STENCIL_TEST), m_state.stencil.test);
+    GLboolean mask[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+    STOA_GL_CALL(glGetBooleanv(GL_COLOR_WRITEMASK, mask));
+    if ((mask[0] == GL_TRUE) != m_state.colorMask.red || (mask[1] == GL_TRUE) != m_state.colorMask.green ||
+        (mask[2] == GL_TRUE) != m_state.colorMask.blue || (mask[3] == GL_TRUE) != m_state.colorMask.alpha)
+        text += std::string(text.empty() ? "" : ", ") + "glColorMask was changed";
+    return text;
+}
+
 StateCache& StateCache::current() { return GpuResources::current().state(); }
 
 void StateCache::reset() {

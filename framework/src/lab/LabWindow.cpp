@@ -13,6 +13,8 @@
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Program.hpp>
+#include <stoa/gl/StateCache.hpp>
+#include <stoa/gl/StudentPass.hpp>
 #include <stoa/gl/Texture2D.hpp>
 #include <stoa/lab/LabApp.hpp>
 #include <stoa/render/TextureOverlay.hpp>
@@ -133,6 +135,9 @@ public:
             showProblem(notImplementedText(stub.describe(m_info.name)));
         } catch (const ShaderNotImplemented& stub) {
             showProblem(notImplementedText(stub.what()));
+        } catch (const GlStateChanged& changed) {   // the window stays, with what to fix
+            StateCache::current().forget();
+            showProblem(changed.what());
         }
     }
 
@@ -248,6 +253,11 @@ private:
         } catch (const ShaderNotImplemented& stub) {
             Framebuffer::bindDefault();
             showProblem(notImplementedText(stub.what()));
+            return false;
+        } catch (const GlStateChanged& changed) {
+            StateCache::current().forget();
+            Framebuffer::bindDefault();
+            showProblem(changed.what());
             return false;
         }
         m_yours = Texture2D::fromImage(yours, pictureOptions());

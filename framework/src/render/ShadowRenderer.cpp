@@ -4,6 +4,7 @@
 #include <stoa/gl/OpenGL.hpp>
 #include <stoa/gl/Program.hpp>
 #include <stoa/gl/StateCache.hpp>
+#include <stoa/gl/StudentPass.hpp>
 #include <stoa/render/ShadowRenderer.hpp>
 #include <stoa/scene/Scene.hpp>
 
@@ -23,8 +24,9 @@ const char* toString(PcfMode mode) {
     return "?";
 }
 
-// The student's pass may have set GL state directly (glEnable, glUseProgram):
-// the cache forgets what it knew, and the app's target is bound again.
+// After the student's pass (run by runStudentPass(), which refuses GL state set
+// behind RenderState): the cache forgets the bindings it may have made directly
+// (glUseProgram), and the app's target is bound again.
 void ShadowRenderer::afterStudentPass(GLuint target) {
     StateCache& cache = StateCache::current();
     cache.forget();
@@ -47,7 +49,9 @@ void ShadowRenderer::renderShadowMap(const Scene& scene, const ShadowLight& ligh
     // The lab draws into whatever the app bound (the window, or the headless
     // target): remember it (the StateCache knows it), since the depth pass binds the map.
     const GLuint previous = StateCache::current().drawFramebuffer();
-    studentCode().shadows.renderShadowPass(scene, m_shadowMap, m_depthProgram, light.lightSpaceMatrix);
+    runStudentPass("renderShadowPass", [&] {
+        studentCode().shadows.renderShadowPass(scene, m_shadowMap, m_depthProgram, light.lightSpaceMatrix);
+    });
     afterStudentPass(previous);
 }
 
@@ -106,7 +110,9 @@ void ShadowRenderer::renderCascaded(const Scene& scene, const Camera& camera, gl
     for (int i = 0; i < count && withMaps; ++i) {
         Framebuffer& map =
             m_cascades.fit(i, camera, aspect, sunDirection, settings.mapSize, light.sceneMin, light.sceneMax);
-        studentCode().shadows.renderShadowPass(scene, map, m_depthProgram, m_cascades.matrix(i));
+        runStudentPass("renderShadowPass", [&] {
+            studentCode().shadows.renderShadowPass(scene, map, m_depthProgram, m_cascades.matrix(i));
+        });
     }
     afterStudentPass(previous);
 

@@ -16,6 +16,7 @@
 #include <stoa/gl/RenderState.hpp>
 
 #include <cstddef>
+#include <string>
 
 namespace stoa {
 
@@ -48,6 +49,12 @@ public:
     /// deleted framebuffer; a deleted program that is in use stays in use).
     void programDeleted(GLuint id);
     void framebufferDeleted(GLuint id);
+
+    /// Asks GL for the render state (depth, culling, blending, colour mask,
+    /// stencil) and lists each part that differs from what the last apply()
+    /// set, e.g. "GL_CULL_FACE is enabled (the pass said: off)"; empty when
+    /// they agree or nothing has been applied since forget().
+    std::string differencesFromGl() const;
 
     /// Calls made and calls skipped as redundant since the last reset(): for tests and benchmarks.
     std::size_t callsMade() const { return m_made; }
