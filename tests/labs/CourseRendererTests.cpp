@@ -23,7 +23,9 @@
 
 #include <stoa/app/HeadlessContext.hpp>
 #include <stoa/camera/OrbitCamera.hpp>
+#include <stoa/core/NotImplemented.hpp>
 #include <stoa/core/Paths.hpp>
+#include <stoa/core/StudentCode.hpp>
 #include <stoa/geometry/Material.hpp>
 #include <stoa/geometry/Shapes.hpp>
 #include <stoa/gl/Framebuffer.hpp>
@@ -37,6 +39,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -237,6 +240,38 @@ TEST_CASE("Course culling: the lab code's verdicts become stats() and levels()",
     CHECK(scene.renderer().stats().culled == 0);
     CHECK(scene.renderer().stats().perLevel[0] == 1);
     CHECK(scene.renderer().levels() == std::vector<int>{0});
+}
+
+TEST_CASE("Course: an unfinished lab switches off its own pass, the rest of the frame is drawn", "[course]") {
+    // Lab 06 and lab 05 handed over but still stubs (they throw NotImplemented).
+    stoa::StudentCodeScope scope;
+    stoa::studentCode().culling.isVisible = [](const stoa::BoundingSphere&, const glm::mat4&) -> bool {
+        throw stoa::NotImplemented("isVisible()", "06_culling");
+    };
+    CourseScene scene;
+    scene.camera = stoa::OrbitCamera({0.0f, 0.5f, 0.0f}, 12.0f, 0.0f, 10.0f);
+    scene.settings.shadowMapSize = 256;
+    stoa::CourseItem item;
+    item.levels = {&scene.cubeMesh(), &scene.cubeMesh()};
+    item.model = glm::translate(glm::mat4(1.0f), glm::vec3(-5.0f, 1.0f, 0.0f));
+    item.sphere = {{-5.0f, 1.0f, 0.0f}, 1.8f};
+    scene.items = {item, item};
+
+    scene.render();
+    const stoa::CourseStats& stats = scene.renderer().stats();
+    REQUIRE(stats.switchedOff.size() == 1);
+    CHECK(stats.switchedOff[0] == "culling and LOD: isVisible() (lab 06_culling)");
+    CHECK(stats.culled == 0);
+    CHECK(stats.perLevel[0] == 2);   // every item drawn, at full detail
+    CHECK(scene.renderer().levels() == std::vector<int>{0, 0});
+
+    stoa::studentCode().shadows.cascadeSplits = [](float, float, int, float) -> std::vector<float> {
+        throw stoa::NotImplemented("cascadeSplits()", "05_shadows");
+    };
+    scene.render();
+    const std::vector<std::string>& off = scene.renderer().stats().switchedOff;
+    CHECK(std::find(off.begin(), off.end(), "cascaded shadows: cascadeSplits() (lab 05_shadows)") != off.end());
+    CHECK(stoa::test::takeGlError() == GL_NO_ERROR);
 }
 
 TEST_CASE("Course shadows: the floor behind the cube darkens, the open floor does not", "[course]") {

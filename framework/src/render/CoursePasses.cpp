@@ -2,6 +2,7 @@
 
 #include <stoa/camera/Camera.hpp>
 #include <stoa/core/Assert.hpp>
+#include <stoa/core/NotImplemented.hpp>
 #include <stoa/core/Paths.hpp>
 #include <stoa/core/StudentCode.hpp>
 #include <stoa/crowd/CrowdSimulation.hpp>
@@ -40,6 +41,13 @@ glm::vec3 levelTint(int level) {
 
 float aspectOf(glm::ivec2 size) { return static_cast<float>(size.x) / static_cast<float>(size.y); }
 
+// A pass that needs a student's function that is still a stub: it is left out
+// of this frame, and the frame's stats say so.
+void switchOff(CourseStats& stats, const char* pass, const NotImplemented& stub) {
+    stats.switchedOff.push_back(std::string(pass) + ": " + stub.function() +
+                                (stub.lab().empty() ? "" : " (lab " + stub.lab() + ")"));
+}
+
 // Lab 06: each item against the camera's frustum, then its level from its size
 // on screen (the student's isVisible and levelOf, where handed over).
 class CullingPass final : public CourseFramePass {
@@ -54,6 +62,23 @@ public:
         levels.assign(items.size(), 0);
         const glm::mat4 viewProjection = frame.camera.projectionMatrix(aspectOf(frame.size)) * frame.view;
         const CullingFunctions& culling = studentCode().culling;
+        try {
+            classify(frame, culling, viewProjection);
+        } catch (const NotImplemented& stub) {   // lab 06 unfinished: every item drawn, at full detail
+            switchOff(stats, "culling and LOD", stub);
+            frame.cullingStubbed = true;
+            stats.culled = stats.tooSmall = 0;
+            stats.perLevel = {};
+            stats.perLevel[0] = static_cast<int>(items.size());
+            levels.assign(items.size(), 0);
+        }
+    }
+
+private:
+    void classify(CourseFrame& frame, const CullingFunctions& culling, const glm::mat4& viewProjection) {
+        const std::vector<CourseItem>& items = frame.items;
+        std::vector<int>& levels = frame.targets.levels;
+        CourseStats& stats = frame.stats;
         for (std::size_t i = 0; i < items.size(); ++i) {
             const CourseItem& item = items[i];
             STOA_ASSERT(!item.levels.empty() && item.levels.front() != nullptr, "CourseItem: needs at least one level");
@@ -93,12 +118,17 @@ public:
         if (!frame.settings.shadows || !code.cascadeSplits || !code.frustumSliceCorners || !code.cascadeLightMatrix) return;
         const CourseSettings& settings = frame.settings;
         const int count = std::min(std::max(settings.cascades, 1), ShadowCascades::kMaxCascades);
-        cascades.split(frame.camera, std::min(settings.shadowFar, frame.camera.farPlane()), count, kCascadeLambda);
         const GLuint previous = StateCache::current().drawFramebuffer();
-        for (int i = 0; i < count; ++i) {
-            Framebuffer& map = cascades.fit(i, frame.camera, aspectOf(frame.size), frame.lighting.sunDirection,
-                                            settings.shadowMapSize, frame.lighting.sceneMin, frame.lighting.sceneMax);
-            drawCasters(frame, map, cascades.matrix(i));
+        try {
+            cascades.split(frame.camera, std::min(settings.shadowFar, frame.camera.farPlane()), count, kCascadeLambda);
+            for (int i = 0; i < count; ++i) {
+                Framebuffer& map = cascades.fit(i, frame.camera, aspectOf(frame.size), frame.lighting.sunDirection,
+                                                settings.shadowMapSize, frame.lighting.sceneMin, frame.lighting.sceneMax);
+                drawCasters(frame, map, cascades.matrix(i));
+            }
+        } catch (const NotImplemented& stub) {   // lab 05 unfinished: the sun lights without shadows
+            switchOff(frame.stats, "cascaded shadows", stub);
+            cascades.clear();
         }
         StateCache::current().bindFramebuffer(previous);
     }
@@ -115,7 +145,7 @@ private:
         const std::vector<int>& levels = frame.targets.levels;
         for (std::size_t j = 0; j < frame.items.size(); ++j) {
             const CourseItem& item = frame.items[j];
-            const bool cullable = frame.settings.culling && item.sphere.radius > 0.0f;
+            const bool cullable = frame.settings.culling && item.sphere.radius > 0.0f && !frame.cullingStubbed;
             if (cullable && culling.isVisible && !culling.isVisible(item.sphere, matrix)) continue;   // not in this cascade
             // Seen by the camera: its level there; unseen (a shadow from outside the view): the coarsest.
             const int level = levels[j] >= 0 ? levels[j] : static_cast<int>(item.levels.size()) - 1;
@@ -403,7 +433,11 @@ private:
 CourseTargets::CourseTargets(const CoursePrograms& programs)
     : deferred(programs.deferred), occlusion(*programs.occlusion, *programs.blur) {
     const OcclusionFunctions& code = studentCode().occlusion;   // the student's samples, where handed over
-    if (code.ssaoKernel && code.ssaoNoise) occlusion.setKernel(code.ssaoKernel(kOcclusionKernelSize, 1), code.ssaoNoise(2));
+    try {
+        if (code.ssaoKernel && code.ssaoNoise) occlusion.setKernel(code.ssaoKernel(kOcclusionKernelSize, 1), code.ssaoNoise(2));
+    } catch (const NotImplemented& stub) {   // lab 09 unfinished: no ambient occlusion
+        occlusionStub = stub.function() + (stub.lab().empty() ? "" : " (lab " + stub.lab() + ")");
+    }
 }
 
 std::vector<std::unique_ptr<CourseFramePass>> makeCoursePasses(const CoursePrograms& programs) {

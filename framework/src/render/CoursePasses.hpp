@@ -15,6 +15,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace stoa {
@@ -27,6 +28,7 @@ struct CourseTargets {
     ShadowCascades cascades;
     TextureOverlay overlay;
     std::vector<int> levels;            // FrameTarget::Levels: -2 culled, -1 too small, else the level
+    std::string occlusionStub;          // the lab 09 function still a stub ("" : none): no occlusion
 };
 
 /// One frame: what the caller gave and what the passes share.
@@ -45,6 +47,7 @@ struct CourseFrame {
     bool occlusion;                           // the ambient occlusion is wanted and can be drawn
     DeferredSettings deferred;                // the point lights' (the occlusion pass adds its picture)
     SceneLighting sceneLighting;              // the ambient light and the sky for the deferred passes
+    bool cullingStubbed = false;              // lab 06's functions are stubs: nothing culled, full detail
 
     bool hasCrowd() const { return crowd && crowd->simulation && crowd->renderer; }
     /// The picture is lit: not one of the G-buffer's own views.

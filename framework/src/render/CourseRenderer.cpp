@@ -138,6 +138,8 @@ void CourseRenderer::render(const std::vector<CourseItem>& items, const CourseLi
     frame.sceneLighting.moon = DirectionalLight{lighting.sunDirection, glm::vec3(0.0f)};   // the sun is the sun pass's
     frame.sceneLighting.sky = settings.sky ? glm::vec3(0.0f) : lighting.skyColor;
 
+    if (settings.ambientOcclusion && !m_targets->occlusionStub.empty())
+        m_stats.switchedOff.push_back("ambient occlusion: " + m_targets->occlusionStub);
     for (const auto& pass : m_passes) {
         if (!pass->enabled(frame)) continue;
         pass->run(frame);

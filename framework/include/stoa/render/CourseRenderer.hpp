@@ -19,9 +19,11 @@
 //
 // The students' functions come in through the framework's student-code table
 // (StudentCode: culling, shadows, deferred, occlusion), so the framework links
-// without them; an unset culling or cascade function switches its pass off,
-// so a program without those labs still draws. Their GLSL comes in through
-// the programs' includes.
+// without them. A culling, cascade or occlusion function that is unset, or
+// still a stub (it throws NotImplemented), switches its own pass off
+// (stats().switchedOff says which), so a program with those labs unfinished
+// still draws the rest; the point lights' tiles (lab 08) are not optional.
+// Their GLSL comes in through the programs' includes.
 //
 //   CourseRenderer renderer(CoursePrograms::load(loader));
 //   renderer.render(items, lighting, camera, size, settings, nullptr);
@@ -134,6 +136,10 @@ struct CourseStats {
     long tileListEntries = 0;
     std::array<double, static_cast<int>(CoursePass::Count)> seconds{};   // CPU time, each pass's own with timePasses
     double totalSeconds = 0.0;
+    /// The passes that switched themselves off this frame because a student's
+    /// function they call is still a stub, each as "culling and LOD:
+    /// isVisible() (lab 06_culling)": the rest of the frame is drawn without them.
+    std::vector<std::string> switchedOff;
 };
 
 struct CoursePrograms {
