@@ -86,6 +86,20 @@ public:
         m_moving = false;
     }
 
+    // 'g' in the window: the renderer, view, lights and camera chosen with the
+    // keys survive the case's render.
+    void keepLiveView() override { m_kept = LiveView{m_cameras, m_settings, m_lightOptions, m_time, m_extraLight, m_moving}; }
+    void restoreLiveView() override {
+        if (!m_kept) return;
+        m_cameras = m_kept->cameras;
+        m_settings = m_kept->settings;
+        m_lightOptions = m_kept->lightOptions;
+        m_time = m_kept->time;
+        m_extraLight = m_kept->extraLight;
+        m_moving = m_kept->moving;
+        m_kept.reset();
+    }
+
     void render(glm::ivec2 size) override {
         std::vector<stoa::PointLight> lights = stoa::wanderingLights(m_lightOptions, m_time);
         if (m_extraLight) lights.push_back(*m_extraLight);
@@ -128,6 +142,15 @@ public:
 
 private:
     stoa::CameraRig m_cameras;
+    struct LiveView {
+        stoa::CameraRig cameras;
+        stoa::DeferredSettings settings;
+        stoa::WanderingLightsOptions lightOptions;
+        float time = 0.0f;
+        std::optional<stoa::PointLight> extraLight;
+        bool moving = false;
+    };
+    std::optional<LiveView> m_kept;   // the live view while 'g' shows the case
     std::unique_ptr<stoa::DeferredRenderer> m_renderer;
     std::unique_ptr<stoa::PieceDrawList> m_scene;
     stoa::DeferredSettings m_settings;

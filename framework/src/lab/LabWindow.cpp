@@ -222,7 +222,11 @@ private:
 
     void cycleView() {
         if (m_view == View::Live) {
-            if (!gradeCurrentCase()) return;
+            runStudentCode([&] { m_lab.keepLiveView(); });   // loadCase() below replaces it
+            if (!gradeCurrentCase()) {
+                runStudentCode([&] { m_lab.restoreLiveView(); });
+                return;
+            }
             m_view = View::Yours;
         } else if (m_view == View::Yours) {
             m_view = m_reference.id() != 0 ? View::Reference : View::Live;
@@ -231,6 +235,7 @@ private:
         } else {
             m_view = View::Live;
         }
+        if (m_view == View::Live) runStudentCode([&] { m_lab.restoreLiveView(); });   // as the keys left it
         static const char* const names[] = {"live", "yours", "reference", "difference"};
         std::printf("view: %s\n", names[static_cast<int>(m_view)]);
         m_window.setTitle(windowTitle(m_info) + " -- " + names[static_cast<int>(m_view)] +

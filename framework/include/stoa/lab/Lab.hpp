@@ -47,6 +47,13 @@ public:
     /// Sets up the scene and camera of a graded case (also when a number key jumps
     /// to it in the window). Read case keys through `spec`'s getters.
     virtual void loadCase(const CaseSpec& spec) = 0;
+    /// The window's 'g' renders the current case through loadCase(), which
+    /// replaces what the keys changed in the live view (a chosen debug view,
+    /// the lights' time). keepLiveView() is called before, restoreLiveView()
+    /// when the window is back in the live view; a lab whose keys change more
+    /// than its camera keeps that here.
+    virtual void keepLiveView() {}
+    virtual void restoreLiveView() {}
     /// Draws one frame into the bound framebuffer.
     virtual void render(glm::ivec2 size) = 0;
 
