@@ -23,6 +23,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "e2e"))
+from check_ui_panel import read_png   # noqa: E402  (width, height, channels, rows)
+
 BLOCK = re.compile(r"^```(xml|json)\n(.*?)^```", re.M | re.S)
 
 
@@ -34,41 +37,9 @@ def blocks(page):
 
 
 def colours(png):
-    """Distinct colours in a PNG, read with the standard library only (8-bit RGB or RGBA)."""
-    import struct
-    import zlib
-    data = png.read_bytes()
-    width, height, depth, kind = struct.unpack(">IIBB", data[16:26])
-    chunks, at = b"", 8
-    while at < len(data):
-        length = struct.unpack(">I", data[at:at + 4])[0]
-        if data[at + 4:at + 8] == b"IDAT":
-            chunks += data[at + 8:at + 8 + length]
-        at += 12 + length
-    raw = zlib.decompress(chunks)
-    channels = {2: 3, 6: 4}.get(kind)
-    if depth != 8 or channels is None:
-        return 1000   # not a format this counts: trust it
-    stride = width * channels
-    seen, previous = set(), bytearray(stride)
-    for row in range(height):
-        start = row * (stride + 1)
-        kind_filter, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
-        for i in range(stride):
-            left = line[i - channels] if i >= channels else 0
-            up = previous[i]
-            corner = previous[i - channels] if i >= channels else 0
-            if kind_filter == 1: line[i] = (line[i] + left) & 255
-            elif kind_filter == 2: line[i] = (line[i] + up) & 255
-            elif kind_filter == 3: line[i] = (line[i] + (left + up) // 2) & 255
-            elif kind_filter == 4:
-                p = left + up - corner
-                pa, pb, pc = abs(p - left), abs(p - up), abs(p - corner)
-                line[i] = (line[i] + (left if pa <= pb and pa <= pc else up if pb <= pc else corner)) & 255
-        for x in range(0, stride, channels):
-            seen.add(bytes(line[x:x + 3]))
-        previous = line
-    return len(seen)
+    """Distinct colours in an 8-bit RGB or RGBA PNG (the e2e tests' reader)."""
+    _, _, channels, rows = read_png(png)
+    return len({bytes(row[x:x + 3]) for row in rows for x in range(0, len(row), channels)})
 
 
 COMMAND = re.compile(r"build/bin/(lab\d\d_[a-z_]+|stoa-editor|stoa-crowds) ([^#`|\n]*)")

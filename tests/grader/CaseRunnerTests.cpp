@@ -109,7 +109,11 @@ TEST_CASE("gradeCase: each way a render can go wrong has its status and reason",
         auto program = fixture.program("slow", "sleep 20");
         GradeResult result = gradeCase(fixture.job(program), fixture.settings);
         CHECK(result.status == GradeStatus::Error);
-        CHECK(result.reason == "timed out after 1 s");
+        // A sleep uses no processor time: waiting, not computing.
+        CHECK(result.reason ==
+              "timed out after 1 s without computing (0.0 s of processor time): it waits for something that does "
+              "not come (a hang)");
+        CHECK_FALSE(result.busyWhenStopped);
     }
     SECTION("no image written") {
         auto program = fixture.program("lazy", "exit 0");
