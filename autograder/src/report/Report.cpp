@@ -270,9 +270,10 @@ void printCollapsedLab(std::ostream& out, const TableLayout& layout, const Total
     if (first != result.lab) {
         // The stub where it fits; else on a line of its own, unless the lab
         // waited for has its own line in this report, which names its stub.
+        const std::string waits = "  waits for lab " + first;
         const std::string which = stub.empty() ? "" : " (" + stub + " is a stub there)";
-        const bool fits = layout.rowStart() + 17 + first.size() + which.size() <= kLineWidth;
-        out << "  waits for lab " << first << (fits ? which : "") << "\n";
+        const bool fits = layout.rowStart() + waits.size() + which.size() <= kLineWidth;
+        out << waits << (fits ? which : "") << "\n";
         const bool shown = std::any_of(totals.labs.begin(), totals.labs.end(),
                                        [&](const LabTotals& entry) { return entry.lab == first; });
         if (!fits && !shown && !stub.empty())

@@ -44,7 +44,6 @@ struct CourseFrame {
     glm::mat4 view;                           // the camera's
     CourseTargets& targets;
     CourseStats& stats;
-    bool occlusion;                           // the ambient occlusion is wanted and can be drawn
     DeferredSettings deferred;                // the point lights' (the occlusion pass adds its picture)
     SceneLighting sceneLighting;              // the ambient light and the sky for the deferred passes
     bool cullingStubbed = false;              // lab 06's functions are stubs: nothing culled, full detail

@@ -130,16 +130,12 @@ void CourseRenderer::render(const std::vector<CourseItem>& items, const CourseLi
     m_stats = CourseStats{};
     m_stats.pointLights = static_cast<int>(lighting.pointLights.size());
 
-    const bool occlusion = settings.ambientOcclusion && m_targets->occlusion.hasKernel();
-    CourseFrame frame{items,       lighting, camera,  size,      settings,
-                      crowd,       glow,     output,  camera.viewMatrix(),
-                      *m_targets,  m_stats,  occlusion, deferredSettingsFor(settings), SceneLighting{}};
+    CourseFrame frame{items,      lighting, camera, size,   settings, crowd, glow, output, camera.viewMatrix(),
+                      *m_targets, m_stats,  deferredSettingsFor(settings), SceneLighting{}};
     frame.sceneLighting.ambient = lighting.ambient;
     frame.sceneLighting.moon = DirectionalLight{lighting.sunDirection, glm::vec3(0.0f)};   // the sun is the sun pass's
     frame.sceneLighting.sky = settings.sky ? glm::vec3(0.0f) : lighting.skyColor;
 
-    if (settings.ambientOcclusion && !m_targets->occlusionStub.empty())
-        m_stats.switchedOff.push_back("ambient occlusion: " + m_targets->occlusionStub);
     for (const auto& pass : m_passes) {
         if (!pass->enabled(frame)) continue;
         pass->run(frame);

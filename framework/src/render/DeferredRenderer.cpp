@@ -133,9 +133,9 @@ void DeferredRenderer::render(const DrawList& items, const std::vector<PointLigh
     const bool needsGBuffer = settings.mode != LightingMode::Forward || settings.view != DeferredView::Final;
     if (needsGBuffer && !settings.reuseGBuffer) renderGeometry(items, camera, size);
     beginLighting(camera, size, lighting);
-    m_stats.lights = static_cast<int>(lights.size());
     if (settings.view == DeferredView::Final && settings.mode == LightingMode::Tiled) {
         // One pass, straight into the output: ambient light and every tile's lights.
+        m_stats.lights = static_cast<int>(lights.size());
         StateCache::current().bindFramebuffer(output);
         drawTiled(lights, lighting, settings, false);
         return;

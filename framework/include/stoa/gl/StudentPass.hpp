@@ -40,7 +40,7 @@ void runStudentPass(const std::string& function, Pass&& pass) {
     StateCache& cache = StateCache::current();
     cache.apply(RenderState::overlay());   // what no pass asks for: a pass that says its state changes it all
     pass();
-    const std::string differences = StateCache::current().differencesFromGl();
+    const std::string differences = cache.differencesFromGl();
     if (!differences.empty()) throw GlStateChanged(glStateChangedMessage(function, differences));
 }
 
