@@ -21,6 +21,7 @@
 //   sky = on | off                    the skybox (default on)
 //   overview = x y z  tx ty tz        the overview's eye and target (default 0 250 110  0 0 5)
 
+#include "checks.hpp"
 #include "lab06.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
@@ -201,6 +202,11 @@ public:
 
     stoa::Camera& activeCamera() override { return m_cameras.active(); }
     void toggleCamera() override { m_cameras.toggle(); }
+
+    stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
+        if (spec.check == "sphere_turned_about_x") return lab06::checkSphereTurnedAboutX();
+        return Lab::runCheck(spec);
+    }
 
     bool keyPressed(unsigned char key) override {
         const bool used = toggle(key);

@@ -18,6 +18,7 @@
 //   lights = n          wandering lights of lab 08, 0..1024 (default 0)
 // In the window: v switches the view, o the occlusion on and off, k the kernel size.
 
+#include "checks.hpp"
 #include "lab09.hpp"
 
 #include <stoa/gl/Program.hpp>
@@ -117,6 +118,11 @@ public:
 
     stoa::Camera& activeCamera() override { return m_cameras.active(); }
     void toggleCamera() override { m_cameras.toggle(); }
+
+    stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
+        if (spec.check == "kernel_in_order") return lab09::checkKernelInOrder();
+        return Lab::runCheck(spec);
+    }
 
     bool keyPressed(unsigned char key) override {
         if (key == 'v') {

@@ -92,11 +92,6 @@ CheckResult checkMergeRules() {
     if (history.undoCount() != 5)
         return CheckResult::fail("a command without a key closes the merge: the next 'other' must be a new edit "
                                  "(expected 5 edits, got " + std::to_string(history.undoCount()) + ")");
-    history.undo(scene);
-    history.perform(scene, move(8.0f, "other"));
-    if (history.undoCount() != 5)
-        return CheckResult::fail("undo() closes the merge: the command after it must be a new edit (expected 5 edits, got " +
-                                 std::to_string(history.undoCount()) + ")");
     while (history.undo(scene)) {}
     if (x() != 0.0f)
         return CheckResult::fail("undoing every edit must bring the box back to 0, it is at " + std::to_string(x()) +
@@ -105,6 +100,25 @@ CheckResult checkMergeRules() {
     if (x() != 3.0f)
         return CheckResult::fail("redo of the merged drag must move the box to where its last command put it (3), got " +
                                  std::to_string(x()));
+
+    // Undo in the middle of a drag: the drag goes on after it, and its next moves
+    // are a new edit, not part of the edit before the undone one (which has the same key).
+    stoa::EditHistory midDrag;
+    midDrag.perform(scene, move(10.0f, "drag"));
+    midDrag.endMerge();
+    midDrag.perform(scene, move(11.0f, "drag"));
+    midDrag.perform(scene, move(12.0f, "drag"));
+    midDrag.undo(scene);
+    midDrag.perform(scene, move(13.0f, "drag"));
+    if (midDrag.undoCount() != 2)
+        return CheckResult::fail("a drag to 10, endMerge(), a drag to 11 and 12, undo() in the middle of it, then a move "
+                                 "to 13 with the same key: expected 2 edits, got " + std::to_string(midDrag.undoCount()) +
+                                 ". undo() closes the merge: the move after it is a new edit, even with the key of the "
+                                 "edit now on top (docs: One drag, one undo)");
+    midDrag.undo(scene);
+    if (x() != 10.0f)
+        return CheckResult::fail("undoing the move to 13 made after an undo in the middle of a drag must bring the box "
+                                 "back to 10, it is at " + std::to_string(x()) + " (docs: One drag, one undo)");
     return CheckResult::pass("merges only while open with equal keys; endMerge, a keyless command and undo close it; "
                              "a merged edit undoes to before its first command and redoes to after its last");
 }

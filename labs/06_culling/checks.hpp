@@ -1,0 +1,16 @@
+#pragma once
+// Lab 06's property checks (the cases with a `check` key in cases.ini), for what
+// the field's pictures cannot show. See docs/labs/06_culling.md, "Checks".
+
+#include <stoa/lab/PropertyCheck.hpp>
+
+namespace lab06 {
+
+/// sphere_turned_about_x: worldBoundingSphere() under a model that stretches an
+/// object along one axis and then turns it about X (the field only turns its
+/// objects about Y): every point of the object's sphere still lies inside the
+/// world sphere, and the world sphere is no larger than the longest column of
+/// the model matrix says (docs: "A sphere in world space").
+stoa::CheckResult checkSphereTurnedAboutX();
+
+} // namespace lab06
