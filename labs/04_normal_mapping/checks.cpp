@@ -4,10 +4,15 @@
 #include "checks.hpp"
 #include "lab04.hpp"
 
+#include <stoa/geometry/Mesh.hpp>
 #include <stoa/image/HeightMap.hpp>
 #include <stoa/image/Image.hpp>
 
+#include <glm/glm.hpp>
+
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -78,6 +83,69 @@ stoa::CheckResult checkNormalMapWraps() {
                                    std::to_string(differing - onBorder) + " of them away from the borders" + where +
                                    ": a texel's normal must depend only on the heights around it "
                                    "(docs: From heights to normals)");
+}
+
+namespace {
+
+std::string tangentText(const glm::vec4& t) {
+    char text[112];
+    std::snprintf(text, sizeof text, "(%.3f, %.3f, %.3f, w %.1f)", t.x, t.y, t.z, t.w);
+    return text;
+}
+
+bool finite(const glm::vec4& t) {
+    return std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z) && std::isfinite(t.w);
+}
+
+} // namespace
+
+stoa::CheckResult checkTangentsWithoutNans() {
+    // Vertices 0-2: a good triangle in the XY plane, u along +X, v along +Y.
+    // Vertices 0, 3, 4: a triangle whose uvs (0,0), (1,1), (2,2) lie on a line.
+    // Vertices 5-7: a triangle with the same uv on all three corners.
+    stoa::Mesh mesh;
+    const glm::vec3 positions[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0},
+                                   {3, 0, 0}, {4, 0, 0}, {3, 1, 0}};
+    const glm::vec2 uvs[] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {2, 2}, {0.5f, 0.5f}, {0.5f, 0.5f}, {0.5f, 0.5f}};
+    for (int i = 0; i < 8; ++i) {
+        stoa::Vertex vertex{};
+        vertex.position = positions[i];
+        vertex.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+        vertex.uv = uvs[i];
+        mesh.vertices.push_back(vertex);
+    }
+    mesh.indices = {0, 1, 2, 0, 3, 4, 5, 6, 7};
+    stoa::computeTangents(mesh);
+
+    const char* const what[] = {"vertex 0 (the good triangle, and one whose uvs lie on a line)",
+                                "vertex 1 (the good triangle)", "vertex 2 (the good triangle)",
+                                "vertex 3 (only a triangle whose uvs lie on a line)",
+                                "vertex 4 (only a triangle whose uvs lie on a line)",
+                                "vertex 5 (only a triangle with one uv on all corners)",
+                                "vertex 6 (only a triangle with one uv on all corners)",
+                                "vertex 7 (only a triangle with one uv on all corners)"};
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 t = mesh.vertices[static_cast<std::size_t>(i)].tangent;
+        const std::string found = std::string("computeTangents(): the tangent of ") + what[i] + " is " + tangentText(t);
+        if (!finite(t))
+            return stoa::CheckResult::fail(found + ": not finite. A triangle whose uvs lie on a line (det = 0) adds "
+                                                   "nothing, and a vertex whose sum is zero still gets a unit tangent "
+                                                   "perpendicular to N (docs: The tangent frame)");
+        const glm::vec3 xyz(t);
+        if (i < 3) {
+            if (glm::length(xyz - glm::vec3(1.0f, 0.0f, 0.0f)) > 1e-3f || t.w != 1.0f)
+                return stoa::CheckResult::fail(found + ", expected (1, 0, 0, w 1): u grows along +X there, and a "
+                                                       "triangle whose uvs lie on a line adds nothing to the sum "
+                                                       "(docs: The tangent frame)");
+            continue;
+        }
+        if (std::abs(glm::length(xyz) - 1.0f) > 1e-3f || std::abs(xyz.z) > 1e-3f || t.w != 1.0f)
+            return stoa::CheckResult::fail(found + ", expected a unit tangent perpendicular to the normal (0, 0, 1), "
+                                                   "with w = +1: any will do where no triangle says which way u grows "
+                                                   "(docs: The tangent frame)");
+    }
+    return stoa::CheckResult::pass("triangles whose uvs lie on a line add nothing, and every vertex gets a finite "
+                                   "unit tangent perpendicular to its normal");
 }
 
 } // namespace lab04

@@ -13,4 +13,11 @@ namespace lab04 {
 /// GL_REPEAT does when the wall samples it.
 stoa::CheckResult checkNormalMapWraps();
 
+/// tangents_without_nans: computeTangents() on a mesh with a triangle whose uvs
+/// lie on a line (det = 0): that triangle adds nothing, the good triangle's
+/// vertices keep its tangent, and a vertex that only the bad triangle uses still
+/// gets a finite unit tangent perpendicular to its normal, with w = +1 (docs:
+/// "The tangent frame").
+stoa::CheckResult checkTangentsWithoutNans();
+
 } // namespace lab04

@@ -121,6 +121,10 @@ public:
 
     stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
         if (spec.check == "kernel_in_order") return lab09::checkKernelInOrder();
+        if (spec.check == "range_check_from_the_point") {
+            m_kernelChanged = true;   // the check sets a kernel of its own
+            return lab09::checkRangeCheckFromThePoint(*m_renderer, *m_occlusion);
+        }
         return Lab::runCheck(spec);
     }
 

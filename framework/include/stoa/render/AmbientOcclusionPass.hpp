@@ -57,6 +57,7 @@ public:
     /// The targets of the last render(): one value per pixel in .r, 1 open, 0 hidden.
     const Texture2D& raw() const { return *m_raw->colorAttachment(0); }
     const Texture2D& blurred() const { return *m_blurred->colorAttachment(0); }
+    const Framebuffer& rawTarget() const { return *m_raw; }
     const Framebuffer& blurredTarget() const { return *m_blurred; }
 
 private:
