@@ -53,7 +53,7 @@ stoa::CheckResult checkNormalMapWraps() {
                                        std::to_string(normals.height()) + " image with " +
                                        std::to_string(normals.channels()) + " channels for a " +
                                        std::to_string(width) + "x" + std::to_string(height) +
-                                       " height map (expected the same size, RGB)");
+                                       " height map (expected the same size, RGB; docs: From heights to normals)");
 
     // Texels whose normal is not the shifted one; they are told apart by where they lie.
     int differing = 0, onBorder = 0, firstX = -1, firstY = -1;

@@ -33,9 +33,14 @@ std::string describe(glm::vec2 p) {
     return text;
 }
 
-} // namespace
+// A failed check says which section of the lab page states the rule.
+stoa::CheckResult pointingToDocs(stoa::CheckResult result, const std::string& section) {
+    if (!result.holds && result.message.find("(docs:") == std::string::npos)
+        result.message += " (docs: " + section + ")";
+    return result;
+}
 
-stoa::CheckResult checkHeightsAtTexelCentres() {
+stoa::CheckResult heightsAtTexelCentresBody() {
     Lcg random;
     stoa::HeightField field;
     field.grid.width = 9;
@@ -86,7 +91,7 @@ stoa::CheckResult checkHeightsAtTexelCentres() {
                                    std::to_string((field.grid.width - 1) * (field.grid.height - 1)) + " midpoints)");
 }
 
-stoa::CheckResult checkBlendedNormalsUnit() {
+stoa::CheckResult blendedNormalsUnitBody() {
     Lcg random;
     stoa::Md2Frame first, second;
     const auto unit = [&]() {
@@ -132,5 +137,13 @@ stoa::CheckResult checkBlendedNormalsUnit() {
     }
     return stoa::CheckResult::pass("blendMd2Frames() keeps 200 vertices on the line between their frames with unit normals at t = 0, 0.25, 0.5 and 0.8");
 }
+
+} // namespace
+
+stoa::CheckResult checkHeightsAtTexelCentres() {
+    return pointingToDocs(heightsAtTexelCentresBody(), "Bilinear height");
+}
+
+stoa::CheckResult checkBlendedNormalsUnit() { return pointingToDocs(blendedNormalsUnitBody(), "Blending two frames"); }
 
 } // namespace lab10

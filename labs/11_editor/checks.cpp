@@ -27,9 +27,14 @@ void put(stoa::StencilReadback& stencil, int x, int y, std::uint8_t value) {
 
 std::string pixel(int x, int y) { return "(" + std::to_string(x) + ", " + std::to_string(y) + ")"; }
 
-} // namespace
+// A failed check says which section of the lab page states the rule.
+CheckResult pointingToDocs(CheckResult result, const std::string& section) {
+    if (!result.holds && result.message.find("(docs:") == std::string::npos)
+        result.message += " (docs: " + section + ")";
+    return result;
+}
 
-CheckResult checkPickWithinACircle() {
+CheckResult pickWithinACircleBody() {
     stoa::StencilReadback stencil = background(21, 15);
     if (stoa::objectAtPixel(stencil, {10, 7}, 4) != -1)
         return CheckResult::fail("a click on the background with nothing within the radius picked an object");
@@ -61,7 +66,7 @@ CheckResult checkPickWithinACircle() {
                              "the background and outside pick nothing");
 }
 
-CheckResult checkMergeRules() {
+CheckResult mergeRulesBody() {
     stoa::EditorScene scene;
     const std::uint32_t id = scene.addObject("box", "shape:cube", "").id;
     const auto x = [&] { return scene.findObject(id)->position.x; };
@@ -123,7 +128,7 @@ CheckResult checkMergeRules() {
                              "a merged edit undoes to before its first command and redoes to after its last");
 }
 
-CheckResult checkReloadBoundaries() {
+CheckResult reloadBoundariesBody() {
     using stoa::AssetFiles;
     using stoa::FileChange;
     const std::vector<AssetFiles> assets = {{"b", {"/s/b.png"}, 1.0}, {"a", {"/s/a.frag", "/s/common.glsl"}, 1.0},
@@ -149,5 +154,13 @@ CheckResult checkReloadBoundaries() {
     return CheckResult::pass("quiet at exactly debounceSeconds, changes at loadedAt and to unused files ignored, "
                              "each due asset once in the assets' order");
 }
+
+} // namespace
+
+CheckResult checkPickWithinACircle() { return pointingToDocs(pickWithinACircleBody(), "A click beside a thin object"); }
+
+CheckResult checkMergeRules() { return pointingToDocs(mergeRulesBody(), "One drag, one undo"); }
+
+CheckResult checkReloadBoundaries() { return pointingToDocs(reloadBoundariesBody(), "Waiting for quiet"); }
 
 } // namespace lab11
