@@ -505,6 +505,27 @@ TEST_CASE("Crowd XML: malformed worlds are refused with the file, the line and t
         files["a9.xml"] = "<agents/>\n";
         expectError(files, "a8.xml", "<include", "<include> nests deeper than 8 files");
     }
+    SECTION("a file included twice") {
+        expectError({{"world.xml", world("  <include file=\"agents.xml\"/>\n  <include file=\"./agents.xml\"/>\n")},
+                     {agents, "<agents/>\n"}},
+                    "world.xml", "./agents.xml", "<include> file=\"./agents.xml\" is included already, at ");
+    }
+    SECTION("too many includes: four files, each including the next many times, stop at the budget") {
+        // Each file includes the next 1000 times (under the depth limit): a second include of one
+        // file is refused at once, and more than maxIncludes different files are refused too.
+        std::string many = "  <include file=\"b.xml\"/>\n";
+        for (int i = 1; i < 1000; ++i) many += "  <include file=\"./b.xml\"/>\n";
+        expectError({{"world.xml", world(many)}, {"b.xml", "<agents/>\n"}}, "world.xml", "./b.xml", "is included already");
+        std::string distinct;
+        std::map<std::string, std::string> files;
+        for (int i = 0; i <= CrowdXmlLimits::maxIncludes; ++i) {
+            distinct += "  <include file=\"f" + std::to_string(i) + ".xml\"/>\n";
+            files["f" + std::to_string(i) + ".xml"] = "<agents/>\n";
+        }
+        files["world.xml"] = world(distinct);
+        expectError(files, "world.xml", "<include file=\"f256.xml",
+                    "more than " + std::to_string(CrowdXmlLimits::maxIncludes) + " <include> elements in one world");
+    }
     SECTION("an error inside an included file names that file") {
         expectError({{"world.xml", world(includeAgents)},
                      {agents, kAgentsStart + "  <behaviour name=\"x\" kind=\"fsm\">\n    <state name=\"s\">\n"

@@ -331,9 +331,13 @@ private:
     std::vector<TypeReference> m_typeReferences;
     NameIndex m_types;                         // m_world.types by name
     NameIndex m_behaviours;                    // m_world.behaviours by name
+    std::vector<OpenFile> m_included;          // every file included so far, named by where it was
+    int m_includes = 0;                        // <include> elements read, all files together
+    std::size_t m_bytes = 0;                   // XML read, all files together
 };
 
 CrowdWorld Loader::read(std::string text, const fs::path& name) {
+    m_bytes = text.size();
     const XmlFile file(std::move(text), name);
     m_world.file = name;
     m_open.push_back({identity(name), file.name()});
@@ -465,12 +469,26 @@ void Loader::readInclude(const XmlFile& file, pugi::xml_node node, int depth) {
         for (std::size_t j = i; j < m_open.size(); ++j) chain += m_open[j].name + " -> ";
         file.fail(node, "include loop: " + chain + path.string());
     }
+    // A file's types and behaviours are defined once: a second include of it
+    // would define them again (and 4 files that include the next 1000 times each
+    // would have the loader read 10^9 files).
+    for (const OpenFile& earlier : m_included)
+        if (earlier.identity == key)
+            file.fail(node, "<include> file=\"" + quoteInput(written) + "\" is included already, at " + earlier.name +
+                                "; include each file once");
+    if (++m_includes > CrowdXmlLimits::maxIncludes)
+        file.fail(node, "more than " + std::to_string(CrowdXmlLimits::maxIncludes) + " <include> elements in one world");
+    m_included.push_back({key, file.name() + ":" + std::to_string(file.line(node))});
     std::string text;
     try {
         text = readInputFile(path, CrowdXmlLimits::maxFileBytes, "crowd XML file");
     } catch (const InputError& error) {
         file.fail(node, "<include> file=\"" + quoteInput(written) + "\" cannot be read: " + error.message());
     }
+    m_bytes += text.size();
+    if (m_bytes > CrowdXmlLimits::maxWorldBytes)
+        file.fail(node, "<include> file=\"" + quoteInput(written) + "\" takes the world past " +
+                            std::to_string(CrowdXmlLimits::maxWorldBytes >> 20) + " MiB of XML, all files together");
     const XmlFile included(std::move(text), path);
     const pugi::xml_node root = included.document().document_element();
     if (std::string(root.name()) != "agents") {

@@ -28,6 +28,8 @@ namespace stoa {
 struct CrowdXmlLimits {
     static constexpr std::size_t maxFileBytes = 4u << 20;   // per XML file
     static constexpr int maxIncludeDepth = 8;
+    static constexpr int maxIncludes = 256;                 // <include> elements, all files together
+    static constexpr std::size_t maxWorldBytes = 16u << 20; // the world file and its includes together
     static constexpr int maxAgents = 1000000;               // all spawn counts together
     static constexpr int maxSamples = 100000;
 };
