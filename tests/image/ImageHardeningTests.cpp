@@ -130,18 +130,18 @@ TEST_CASE("Issue 14: BMP and TGA headers are checked before anything is allocate
     SECTION("a 54-byte BMP claiming 20000x20000") {
         CHECK(contains(refused(folder.write("huge.bmp", bmpHeader(20000, 20000))), "limit of 16384 pixels per side"));
     }
-    SECTION("a 54-byte BMP claiming 16000x16000, within the limits but not in the file") {
-        const std::string message = refused(folder.write("big.bmp", bmpHeader(16000, 16000)));
+    SECTION("a 54-byte BMP claiming 4000x4000, within the limits but not in the file") {
+        const std::string message = refused(folder.write("big.bmp", bmpHeader(4000, 4000)));
         CHECK(contains(message, "truncated"));
-        CHECK(contains(message, "16000x16000"));
+        CHECK(contains(message, "4000x4000"));
     }
     SECTION("a BMP of height -2147483648 (stb_image would negate INT_MIN)") {
         CHECK(contains(refused(folder.write("intmin.bmp", bmpHeader(2, INT32_MIN))), "2147483648"));
     }
-    SECTION("an 18-byte TGA header claiming 16000x16000") {
+    SECTION("an 18-byte TGA header claiming 4000x4000, within the limits but not in the file") {
         std::string tga(18, '\0');
         tga[2] = 2;  // uncompressed true colour
-        tga.replace(12, 4, littleEndian(16000, 2) + littleEndian(16000, 2));
+        tga.replace(12, 4, littleEndian(4000, 2) + littleEndian(4000, 2));
         tga[16] = 24;
         CHECK(contains(refused(folder.write("big.tga", tga)), "truncated"));
     }
@@ -229,5 +229,40 @@ TEST_CASE("Issue 14: image messages name the real cause", "[image][issue14]") {
         CHECK(contains(refused(loop), "loop of symbolic links"));
         const fs::path longName = folder / (std::string(256, 'h') + ".pgm");
         CHECK(contains(refused(longName), "too long"));
+    }
+}
+
+namespace {
+
+// A PNG signature and its IHDR chunk only: enough for the header checks, which come first.
+std::string pngHeader(std::uint32_t width, std::uint32_t height, int depth, int colourType) {
+    const auto big = [](std::uint32_t value) {
+        std::string bytes(4, '\0');
+        for (int i = 0; i < 4; ++i) bytes[std::size_t(i)] = char((value >> (24 - 8 * i)) & 0xff);
+        return bytes;
+    };
+    return std::string("\x89PNG\r\n\x1a\n", 8) + big(13) + "IHDR" + big(width) + big(height) + char(depth) +
+           char(colourType) + std::string(3, '\0') + big(0) + big(0) + "IEND" + big(0);
+}
+
+} // namespace
+
+TEST_CASE("Issue 25: a decompression bomb is refused from its header, before a pixel is decoded", "[image][issue25]") {
+    TempFolder folder("image-hardening");
+    SECTION("16384x16384, the size of a 270 KB all-black PNG that took 3.5 s and 529 MB") {
+        const std::string message = refused(folder.write("bomb.png", pngHeader(16384, 16384, 8, 6)));
+        CHECK(contains(message, "16384x16384 (256.0 megapixels)"));
+        CHECK(contains(message, "past the limit of 16 megapixels (4096 x 4096)"));
+    }
+    SECTION("a 16-bit image counts twice") {
+        CHECK(contains(refused(folder.write("deep.png", pngHeader(4096, 4096, 16, 0))), "at 16 bits a sample, which count twice"));
+        std::string pgm = "P5\n4096 4096\n65535\n";
+        CHECK(contains(refused(folder.write("deep.pgm", pgm)), "count twice"));
+    }
+    SECTION("4096x4096 at 8 bits, the limit itself, loads") {
+        Image(4096, 4096, 1).savePng(folder / "limit.png");
+        const Image image = Image::load(folder / "limit.png");
+        CHECK(image.width() == 4096);
+        CHECK(image.height() == 4096);
     }
 }

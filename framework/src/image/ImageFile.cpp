@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cstring>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -49,7 +50,9 @@ std::string dimensions(long long width, long long height) {
 }
 
 /// Width and height within the limits, or an InputError naming them.
-void checkSize(const Reader& in, const char* format, long long width, long long height) {
+/// (`bytesPerSample` 2 for a 16-bit image: it counts twice towards maxPixels, as stb_image holds
+/// it at 16 bits before it converts.)
+void checkSize(const Reader& in, const char* format, long long width, long long height, int bytesPerSample = 1) {
     if (width <= 0 || height <= 0) {
         in.fail(std::string("the ") + format + " header gives the size " + dimensions(width, height) +
                 "; width and height must be at least 1");
@@ -58,10 +61,13 @@ void checkSize(const Reader& in, const char* format, long long width, long long 
         in.fail(std::string("the ") + format + " header gives the size " + dimensions(width, height) +
                 ", past the limit of " + std::to_string(Image::maxSide) + " pixels per side");
     }
-    if (width * height > Image::maxPixels) {
-        in.fail(std::string("the ") + format + " header gives the size " + dimensions(width, height) + " (" +
-                std::to_string(width * height / 1000000) + " megapixels), past the limit of " +
-                std::to_string(Image::maxPixels / (1024 * 1024)) + " megapixels");
+    if (width * height * bytesPerSample > Image::maxPixels) {
+        char megapixels[32];
+        std::snprintf(megapixels, sizeof megapixels, "%.1f", static_cast<double>(width * height) / (1024.0 * 1024.0));
+        in.fail(std::string("the ") + format + " header gives the size " + dimensions(width, height) + " (" + megapixels +
+                " megapixels" + (bytesPerSample > 1 ? ", at 16 bits a sample, which count twice" : "") +
+                "), past the limit of " + std::to_string(Image::maxPixels / (1024 * 1024)) +
+                " megapixels (4096 x 4096): scale it down");
     }
 }
 
@@ -78,7 +84,7 @@ ImageFileHeader checkPng(const Reader& in) {
     }
     const std::uint32_t width = in.big(16, 4), height = in.big(20, 4);
     const int depth = in.byte(24), colourType = in.byte(25);
-    checkSize(in, "PNG", width, height);
+    checkSize(in, "PNG", width, height, depth == 16 ? 2 : 1);
     int samples = 0;
     switch (colourType) {
     case 0: samples = 1; break;
@@ -299,7 +305,7 @@ PnmHeader readPnmHeader(const Reader& in) {
 
 ImageFileHeader checkPnm(const Reader& in) {
     const PnmHeader header = readPnmHeader(in);
-    checkSize(in, "PNM", header.width, header.height);
+    checkSize(in, "PNM", header.width, header.height, header.maxValue > 255 ? 2 : 1);
     if (header.maxValue < 1 || header.maxValue > 65535) {
         in.fail("the PNM header gives maxval " + std::to_string(header.maxValue) + "; it must be 1 to 65535");
     }
