@@ -547,6 +547,40 @@ TEST_CASE("Crowd XML: malformed worlds are refused with the file, the line and t
     }
 }
 
+TEST_CASE("Issue 25: a crowd world's numbers are checked for the range they are used in", "[crowd][xml][issue25]") {
+    const auto withType = [](const std::string& attributes) {
+        return world("  <type name=\"t\" model=\"m\" skin=\"s\" behaviour=\"walk\" " + attributes + "/>\n");
+    };
+    SECTION("past a float's range: too large, not 'not a number'") {
+        expectError({{"world.xml", withType("speed=\"1e39\"")}}, "world.xml", "speed=",
+                    "speed=\"1e39\" on <type> is too large for a float (at most 3.4e38)");
+    }
+    SECTION("so close to 0 that a float loses it") {
+        expectError({{"world.xml", withType("scale=\"1e-60\"")}}, "world.xml", "scale=",
+                    "scale=\"1e-60\" on <type> is too close to 0 for a float");
+        expectError({{"world.xml", withType("radius=\"1e-45\"")}}, "world.xml", "radius=", "is too close to 0 for a float");
+    }
+    SECTION("a step too small to simulate in any time") {
+        const std::string text = world("");
+        expectError({{"world.xml", "<world step=\"0.0001\">" + text.substr(text.find('>') + 1)}}, "world.xml", "<world",
+                    "step=\"0.0001\" on <world> is out of range: it must be from 0.001 to 1 (seconds)");
+    }
+    SECTION("a speed a step would carry past any ground") {
+        expectError({{"world.xml", withType("speed=\"3e38\"")}}, "world.xml", "speed=",
+                    "is out of range: it must be greater than 0 and at most 100000");
+    }
+    SECTION("a ground whose extent or heights overflow") {
+        const std::string text = world("");
+        const std::string ground = "<ground collision=\"c.png\"/>";
+        std::string huge = text;
+        huge.replace(huge.find(ground), ground.size(), "<ground collision=\"c.png\" min=\"-3e38 -3e38\" max=\"3e38 3e38\"/>");
+        expectError({{"world.xml", huge}}, "world.xml", "<ground", "x and z must be from -100000 to 100000 (metres)");
+        std::string high = text;
+        high.replace(high.find(ground), ground.size(), "<ground collision=\"c.png\" height-min=\"-3e38\" height-max=\"3e38\"/>");
+        expectError({{"world.xml", high}}, "world.xml", "<ground", "must be from -100000 to 100000 (metres)");
+    }
+}
+
 TEST_CASE("Crowd XML: a hostile file of 4 MB reads in linear time and memory", "[crowd][xml]") {
     const std::string head = "<world><ground collision=\"c\"/><type name=\"a\" model=\"m\" skin=\"s\" behaviour=\"b\"/>"
                              "<spawn type=\"a\" count=\"1\" x=\"0\" z=\"0\"/>\n";

@@ -179,26 +179,65 @@ std::string optionalText(const XmlFile& file, pugi::xml_node node, const char* n
     return node.attribute(name) ? requiredText(file, node, name) : fallback;
 }
 
-/// The whole of `text` as a finite number, or nothing ("", "1.5m", "nan", "inf", "1e999").
+/// What the text of a number attribute holds.
+enum class NumberText { Number, NotANumber, TooLarge, TooSmall };
+
+/// Reads the whole of `text` as a number a float can hold: not "", "1.5m", "nan" or "inf"
+/// (NotANumber), not past a float's range ("1e39": TooLarge), and not so close to 0 that a
+/// float loses it or its precision ("1e-60", "1e-45": TooSmall); 0 itself is a number.
 /// std::from_chars ignores the locale, unlike strtod.
-std::optional<double> parseNumber(std::string_view text) {
+NumberText parseNumber(std::string_view text, double& value) {
     if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-    double value = 0.0;
+    value = 0.0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
-    if (!std::isfinite(value) || !std::isfinite(static_cast<float>(value))) return std::nullopt;
+    if (text.empty() || end != text.data() + text.size()) return NumberText::NotANumber;
+    if (error == std::errc::result_out_of_range) {
+        // from_chars leaves `value` alone then: the digits tell which way it overflowed.
+        const std::size_t exponent = text.find_first_of("eE");
+        const bool negativeExponent = exponent != std::string_view::npos && exponent + 1 < text.size() && text[exponent + 1] == '-';
+        return negativeExponent ? NumberText::TooSmall : NumberText::TooLarge;
+    }
+    if (error != std::errc() || !std::isfinite(value)) return NumberText::NotANumber;
+    if (std::abs(value) > std::numeric_limits<float>::max()) return NumberText::TooLarge;
+    if (value != 0.0 && std::abs(value) < std::numeric_limits<float>::min()) return NumberText::TooSmall;
+    return NumberText::Number;
+}
+
+std::optional<double> parseNumber(std::string_view text) {
+    double value = 0.0;
+    if (parseNumber(text, value) != NumberText::Number) return std::nullopt;
     return value;
 }
 
-enum class Range { Finite, NonNegative, Positive, UnitInterval, Step };
+/// The problem with the number attribute's text, as a message, or "" when it is a number.
+std::string numberProblem(pugi::xml_attribute attribute, const std::string& where) {
+    double value = 0.0;
+    switch (parseNumber(attribute.value(), value)) {
+    case NumberText::Number: return "";
+    case NumberText::NotANumber: return "the attribute " + attributeText(attribute) + " on " + where + " is not a number";
+    case NumberText::TooLarge:
+        return "the attribute " + attributeText(attribute) + " on " + where + " is too large for a float (at most 3.4e38)";
+    case NumberText::TooSmall:
+        return "the attribute " + attributeText(attribute) + " on " + where +
+               " is too close to 0 for a float (the smallest it keeps exactly is 1.2e-38); write 0 or a larger number";
+    }
+    return "";
+}
+
+enum class Range { Finite, NonNegative, Positive, UnitInterval, Step, Metres };
+
+/// How far from the origin a place or a height may be: 100 km, so that every
+/// difference of two of them is a float with room for centimetres to spare.
+constexpr double kMaxMetres = 100000.0;
 
 bool inRange(double value, Range range) {
     switch (range) {
     case Range::Finite: return true;
     case Range::NonNegative: return value >= 0.0;
-    case Range::Positive: return value > 0.0;
+    case Range::Positive: return value > 0.0 && value <= kMaxMetres;
     case Range::UnitInterval: return value >= 0.0 && value <= 1.0;
-    case Range::Step: return value > 0.0 && value <= 1.0;
+    case Range::Step: return value >= 0.001 && value <= 1.0;
+    case Range::Metres: return std::abs(value) <= kMaxMetres;
     }
     return false;
 }
@@ -207,9 +246,10 @@ const char* describe(Range range) {
     switch (range) {
     case Range::Finite: return "a finite number";
     case Range::NonNegative: return "0 or more";
-    case Range::Positive: return "greater than 0";
+    case Range::Positive: return "greater than 0 and at most 100000";
     case Range::UnitInterval: return "between 0 and 1";
-    case Range::Step: return "greater than 0 and at most 1 (seconds)";
+    case Range::Step: return "from 0.001 to 1 (seconds)";
+    case Range::Metres: return "from -100000 to 100000 (metres)";
     }
     return "";
 }
@@ -220,10 +260,8 @@ float number(const XmlFile& file, pugi::xml_node node, const char* name, std::op
         if (fallback) return *fallback;
         file.fail(node, "missing attribute '" + std::string(name) + "' on " + tag(node));
     }
-    const std::optional<double> value = parseNumber(attribute.value());
-    if (!value) file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is not a number");
-    // The range is checked on the float kept, so that step="1e-50" (0 as a float) is out of range.
-    const float kept = static_cast<float>(*value);
+    if (const std::string problem = numberProblem(attribute, tag(node)); !problem.empty()) file.fail(node, problem);
+    const float kept = static_cast<float>(*parseNumber(attribute.value()));
     if (!inRange(kept, range)) {
         file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is out of range: it must be " +
                             describe(range));
@@ -275,6 +313,10 @@ glm::vec2 coordinates(const XmlFile& file, pugi::xml_node node, const char* name
     if (!x || !z) {
         file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) +
                             " is not a pair of numbers \"x z\" (metres)");
+    }
+    if (!inRange(*x, Range::Metres) || !inRange(*z, Range::Metres)) {
+        file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is out of range: x and z must be " +
+                            describe(Range::Metres));
     }
     return {static_cast<float>(*x), static_cast<float>(*z)};
 }
@@ -370,7 +412,7 @@ void Loader::readWorld(const XmlFile& file, pugi::xml_node world) {
         } else if (name == "base") {
             checkLeaf(file, node, {"x", "z", "radius"});
             Base base;
-            base.position = {number(file, node, "x", std::nullopt, Range::Finite), number(file, node, "z", std::nullopt, Range::Finite)};
+            base.position = {number(file, node, "x", std::nullopt, Range::Metres), number(file, node, "z", std::nullopt, Range::Metres)};
             base.radius = number(file, node, "radius", 1.5f, Range::Positive);
             base.line = file.line(node);
             m_world.bases.push_back(base);
@@ -378,7 +420,7 @@ void Loader::readWorld(const XmlFile& file, pugi::xml_node world) {
             checkLeaf(file, node, {"count", "x", "z", "radius"});
             SampleArea area;
             area.count = static_cast<int>(wholeNumber(file, node, "count", std::nullopt, 0, CrowdXmlLimits::maxSamples));
-            area.centre = {number(file, node, "x", std::nullopt, Range::Finite), number(file, node, "z", std::nullopt, Range::Finite)};
+            area.centre = {number(file, node, "x", std::nullopt, Range::Metres), number(file, node, "z", std::nullopt, Range::Metres)};
             area.radius = number(file, node, "radius", 1.0f, Range::NonNegative);
             area.line = file.line(node);
             samples += area.count;
@@ -392,7 +434,7 @@ void Loader::readWorld(const XmlFile& file, pugi::xml_node world) {
             SpawnArea spawn;
             spawn.type = requiredText(file, node, "type");
             spawn.count = static_cast<int>(wholeNumber(file, node, "count", std::nullopt, 0, CrowdXmlLimits::maxAgents));
-            spawn.centre = {number(file, node, "x", std::nullopt, Range::Finite), number(file, node, "z", std::nullopt, Range::Finite)};
+            spawn.centre = {number(file, node, "x", std::nullopt, Range::Metres), number(file, node, "z", std::nullopt, Range::Metres)};
             spawn.radius = number(file, node, "radius", 1.0f, Range::NonNegative);
             spawn.team = static_cast<int>(wholeNumber(file, node, "team", 0, 0, std::numeric_limits<int>::max()));
             spawn.line = file.line(node);
@@ -436,8 +478,8 @@ void Loader::readGround(const XmlFile& file, pugi::xml_node node) {
     if (!(ground.footprintMin.x < ground.footprintMax.x && ground.footprintMin.y < ground.footprintMax.y)) {
         file.fail(node, "<ground> min must be less than max on both axes (x and z)");
     }
-    ground.heightMin = number(file, node, "height-min", 0.0f, Range::Finite);
-    ground.heightMax = number(file, node, "height-max", 0.0f, Range::Finite);
+    ground.heightMin = number(file, node, "height-min", 0.0f, Range::Metres);
+    ground.heightMax = number(file, node, "height-max", 0.0f, Range::Metres);
     if (ground.heightMax < ground.heightMin) file.fail(node, "<ground> height-max must be at least height-min");
     ground.scenery = optionalText(file, node, "scenery", "none");
     if (ground.scenery != "acropolis" && ground.scenery != "terrain" && ground.scenery != "none") {
