@@ -581,6 +581,46 @@ TEST_CASE("Issue 25: a crowd world's numbers are checked for the range they are 
     }
 }
 
+TEST_CASE("Issue 25: a crowd world's text is UTF-8 with XML's own entities only", "[crowd][xml][issue25]") {
+    const auto named = [](const std::string& name) {
+        return world("  <type name=\"" + name + "\" model=\"m\" skin=\"s\" behaviour=\"walk\"/>\n");
+    };
+    SECTION("an undefined entity is refused, not kept as its name") {
+        expectError({{"world.xml", named("a&foo;b")}}, "world.xml", "&foo;", "the entity '&foo;' is not defined");
+    }
+    SECTION("&#0; would cut the name short") {
+        expectError({{"world.xml", named("ab&#0;cd")}}, "world.xml", "&#0;", "'&#0;' refers to a character XML does not allow");
+    }
+    SECTION("a character reference past U+10FFFF would not be UTF-8") {
+        expectError({{"world.xml", named("x&#x110000;")}}, "world.xml", "&#x110000;", "refers to a character XML does not allow");
+    }
+    SECTION("a lone & is an error that says to write &amp;") {
+        expectError({{"world.xml", named("salt & pepper")}}, "world.xml", "& pepper", "write & as &amp;");
+    }
+    SECTION("a byte that is not UTF-8 (Latin-1) names its line") {
+        expectError({{"world.xml", named("caf\xe9")}}, "world.xml", "caf", "the file is not UTF-8 here");
+    }
+    SECTION("UTF-16 says to save as UTF-8") {
+        std::string utf16 = "\xff\xfe";
+        for (char c : std::string("<world/>\n")) utf16 += std::string(1, c) + '\0';
+        TempFolder folder("crowd-xml");
+        folder.write("world.xml", utf16);
+        try {
+            (void)loadCrowdWorld(folder / "world.xml");
+            FAIL("a UTF-16 world loaded");
+        } catch (const InputError& error) {
+            CHECK(contains(error.message(), "the file is UTF-16; save it as UTF-8"));
+        }
+    }
+    SECTION("XML's own entities, character references and a & in a comment read as they should") {
+        TempFolder folder("crowd-xml");
+        folder.write("world.xml", "<!-- salt & pepper -->\n" + named("a&amp;b&#x263A;&#65;"));
+        const CrowdWorld loaded = loadCrowdWorld(folder / "world.xml");
+        REQUIRE(loaded.types.size() == 2);
+        CHECK(loaded.types[1].name == "a&b\xe2\x98\xba" "A");
+    }
+}
+
 TEST_CASE("Crowd XML: a hostile file of 4 MB reads in linear time and memory", "[crowd][xml]") {
     const std::string head = "<world><ground collision=\"c\"/><type name=\"a\" model=\"m\" skin=\"s\" behaviour=\"b\"/>"
                              "<spawn type=\"a\" count=\"1\" x=\"0\" z=\"0\"/>\n";

@@ -1,5 +1,7 @@
 #include <stoa/crowd/CrowdXml.hpp>
 
+#include "XmlText.hpp"
+
 #include <stoa/core/InputError.hpp>
 #include <stoa/core/InputFile.hpp>
 
@@ -42,6 +44,7 @@ public:
     /// Parses `text`; `name` is the file named in errors and its folder the
     /// one relative paths in the file are resolved against.
     XmlFile(std::string text, fs::path name) : m_name(name.string()), m_folder(name.parent_path()), m_text(std::move(text)) {
+        checkXmlText(m_text, m_name);
         m_lineStarts.push_back(0);
         for (std::size_t i = 0; i < m_text.size(); ++i) {
             const bool lineFeed = m_text[i] == '\n';
