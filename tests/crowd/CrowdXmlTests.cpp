@@ -505,6 +505,12 @@ TEST_CASE("Crowd XML: malformed worlds are refused with the file, the line and t
         files["a9.xml"] = "<agents/>\n";
         expectError(files, "a8.xml", "<include", "<include> nests deeper than 8 files");
     }
+    SECTION("an include outside the world's folder") {
+        expectError({{"world.xml", world("  <include file=\"/etc/passwd\"/>\n")}}, "world.xml", "/etc/passwd",
+                    "<include> file=\"/etc/passwd\" lies outside the world's folder");
+        expectError({{"world.xml", world("  <include file=\"../outside.xml\"/>\n")}}, "world.xml", "../outside.xml",
+                    "lies outside the world's folder");
+    }
     SECTION("a file included twice") {
         expectError({{"world.xml", world("  <include file=\"agents.xml\"/>\n  <include file=\"./agents.xml\"/>\n")},
                      {agents, "<agents/>\n"}},

@@ -508,6 +508,14 @@ void Loader::readInclude(const XmlFile& file, pugi::xml_node node, int depth) {
         file.fail(node, "<include> nests deeper than " + std::to_string(CrowdXmlLimits::maxIncludeDepth) + " files");
     }
     const fs::path key = identity(path);
+    // Only the world's own folder tree: an include of /etc/passwd or ../../secret.xml
+    // would otherwise read any file the user can, and quote it in its errors.
+    const fs::path worldFolder = identity(fs::path(m_world.file).parent_path());
+    const fs::path inside = key.lexically_relative(worldFolder);
+    if (inside.empty() || *inside.begin() == "..") {
+        file.fail(node, "<include> file=\"" + quoteInput(written) + "\" lies outside the world's folder " + worldFolder.string() +
+                            "; a world includes files from its own folder and the folders below it");
+    }
     for (std::size_t i = 0; i < m_open.size(); ++i) {
         if (m_open[i].identity != key) continue;
         std::string chain;
