@@ -272,6 +272,24 @@ TEST_CASE("Malformed MD2 files are refused with a message that names the problem
         put32(bytes, static_cast<std::size_t>(framesAt + 3 * frameSize) + 16, 0x7FC00000u);   // frame 3, translate.y = NaN
         CHECK(contains(errorOf(bytes), "frame 3 has a scale or translation"));
     }
+    SECTION("a finite scale or translation that puts vertices at 3e38 x 255 (issue 25)") {
+        std::string bytes = good;
+        put32(bytes, static_cast<std::size_t>(framesAt) + 4, 0x7F61B1E6u);   // frame 0, scale.y = 3e38
+        CHECK(contains(errorOf(bytes), "frame 0's y axis (scale 3e+38, translation"));
+        CHECK(contains(errorOf(bytes), "expected at most 1e+06"));
+        bytes = good;
+        put32(bytes, static_cast<std::size_t>(framesAt + 2 * frameSize) + 12, 0x7F61B1E6u);   // frame 2, translate.x = 3e38
+        CHECK(contains(errorOf(bytes), "frame 2's x axis"));
+    }
+    SECTION("a skin name of 64 bytes without a NUL, or with a control byte (issue 25)") {
+        const std::int32_t skinsAt = field(good, kSkinsAt);
+        std::string bytes = good;
+        for (int i = 0; i < 64; ++i) bytes[static_cast<std::size_t>(skinsAt + i)] = 'a';
+        CHECK(contains(errorOf(bytes), "MD2 skin name 0 has no NUL byte within its 64 bytes"));
+        bytes = good;
+        bytes[static_cast<std::size_t>(skinsAt + 3)] = '\t';
+        CHECK(contains(errorOf(bytes), "MD2 skin name 0 holds the control byte 9 at position 3"));
+    }
     SECTION("frame names without a NUL or with bytes that are not printable") {
         std::string bytes = good;
         for (int i = 0; i < 16; ++i) bytes[static_cast<std::size_t>(framesAt) + 24 + i] = 'a';

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <stdexcept>
@@ -336,7 +337,15 @@ Md2Model decodeMd2(const std::uint8_t* bytes, std::size_t size, const std::strin
     model.skinHeight = header.skinHeight;
     for (std::int64_t skin = 0; skin < header.skinCount; ++skin) {
         const char* text = reinterpret_cast<const char*>(bytes + header.skinsOffset + skin * kSkinNameBytes);
-        model.skinNames.emplace_back(text, std::find(text, text + kSkinNameBytes, '\0'));
+        const char* end = std::find(text, text + kSkinNameBytes, '\0');
+        if (end == text + kSkinNameBytes)
+            throw InputError(name, 0, "MD2 skin name " + std::to_string(skin) + " has no NUL byte within its 64 bytes");
+        const auto control = std::find_if(text, end, [](char c) { return static_cast<unsigned char>(c) < 0x20; });
+        if (control != end)
+            throw InputError(name, 0, "MD2 skin name " + std::to_string(skin) + " holds the control byte " +
+                                          std::to_string(static_cast<int>(*control)) + " at position " +
+                                          std::to_string(control - text));
+        model.skinNames.emplace_back(text, end);
     }
     model.texCoords.reserve(static_cast<std::size_t>(header.texCoordCount));
     for (std::int64_t i = 0; i < header.texCoordCount; ++i) {
@@ -378,6 +387,14 @@ Md2Model decodeMd2(const std::uint8_t* bytes, std::size_t size, const std::strin
             if (!std::isfinite(scale[axis]) || !std::isfinite(translate[axis]))
                 throw InputError(name, 0, "MD2 frame " + std::to_string(frame) + " has a scale or translation that is not a "
                                               "finite number (infinity or NaN)");
+            const double reach = std::abs(double{scale[axis]}) * 255.0 + std::abs(double{translate[axis]});
+            if (reach > Md2Limits::maxCoordinate) {
+                char text[160];
+                std::snprintf(text, sizeof text, "MD2 frame %d's %c axis (scale %g, translation %g) places vertices up to %g "
+                              "units from the origin; expected at most %g", frame, "xyz"[axis], double{scale[axis]},
+                              double{translate[axis]}, reach, double{Md2Limits::maxCoordinate});
+                throw InputError(name, 0, text);
+            }
         }
         Md2Frame decoded;
         decoded.name = frameName(bytes, at + 24, frame, name);

@@ -75,6 +75,9 @@ struct Md2Limits {
     static constexpr int maxFrames = 512;
     static constexpr int maxSkins = 32;
     static constexpr int maxTexCoords = 3 * maxTriangles;   // one per triangle corner at most
+    /// How far from the origin a frame may put a vertex (|scale| x 255 + |translate|
+    /// on each axis), in model units: finite is not enough, as 3e38 x 255 is not.
+    static constexpr float maxCoordinate = 1.0e6f;
 };
 
 /// Reads an MD2 file. Throws InputError naming the file and what was wrong:
