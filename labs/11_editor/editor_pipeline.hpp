@@ -377,7 +377,7 @@ private:
         }
     }
 
-    static constexpr std::uint32_t kFirstFieldId = 1u << 24;   // past any scene's ids: every copy its own colour
+    static constexpr std::uint32_t kFirstFieldId = EditorScene::kMaxId + 1;   // past any scene's ids: every copy its own colour
 
     struct Placement {
         std::size_t mesh = 0;

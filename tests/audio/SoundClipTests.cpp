@@ -123,6 +123,47 @@ TEST_CASE("A damaged or cut or foreign Ogg file is an InputError naming it", "[a
     CHECK_MENTIONS(decodeError("", "empty.ogg"), "empty");
 }
 
+namespace {
+
+// Ogg's page checksum (RFC 3533), to damage a stream the way an attacker would: with the checksums fixed.
+std::uint32_t pageCrc(const std::string& page) {
+    std::uint32_t crc = 0;
+    for (std::size_t i = 0; i < page.size(); ++i) {
+        const std::uint8_t byte = (i >= 22 && i < 26) ? 0 : std::uint8_t(page[i]);
+        crc ^= std::uint32_t(byte) << 24;
+        for (int bit = 0; bit < 8; ++bit) crc = (crc & 0x80000000u) ? (crc << 1) ^ 0x04c11db7u : crc << 1;
+    }
+    return crc;
+}
+
+// Sets the checksum of every page of `bytes` to match its content.
+void fixChecksums(std::string& bytes) {
+    for (std::size_t at = 0; at + 27 <= bytes.size();) {
+        const std::size_t segments = std::uint8_t(bytes[at + 26]);
+        std::size_t body = 0;
+        for (std::size_t i = 0; i < segments; ++i) body += std::uint8_t(bytes[at + 27 + i]);
+        const std::size_t size = 27 + segments + body;
+        const std::uint32_t crc = pageCrc(bytes.substr(at, size));
+        for (int i = 0; i < 4; ++i) bytes[at + 22 + std::size_t(i)] = char((crc >> (8 * i)) & 0xFF);
+        at += size;
+    }
+}
+
+} // namespace
+
+TEST_CASE("Issue 25: a setup header that asks for huge decoder tables is refused at once, as corrupt", "[audio][issue25]") {
+    std::string bytes = readBytes(soundsDir / "spark.ogg");
+    // The setup header: "\x05vorbis", the codebook count - 1 (8 bits), then the first codebook:
+    // its sync pattern (3 bytes), dimensions (16 bits) and number of entries (24 bits).
+    const std::size_t setup = bytes.find("\x05vorbis");
+    REQUIRE(setup != std::string::npos);
+    const std::size_t entries = setup + 7 + 1 + 3 + 2;
+    REQUIRE(bytes.substr(setup + 8, 3) == "BCV");
+    for (int i = 0; i < 3; ++i) bytes[entries + std::size_t(i)] = char(0xFF);   // 16,777,215 entries
+    fixChecksums(bytes);
+    CHECK_MENTIONS(decodeError(bytes, "bomb.ogg"), "bomb.ogg", "setup header asks for more than 4 MiB", "the stream is corrupt");
+}
+
 TEST_CASE("A missing sound file is an InputError naming it", "[audio]") {
     const fs::path missing = soundsDir / "no_such_sound.ogg";
     try {

@@ -142,7 +142,7 @@ TEST_CASE("Ids, materials and ranges are checked", "[editor][scene-file]") {
     const std::string zero = replaced(kScene, "\"id\": 1,", "\"id\": 0,");
     checkRefused(zero, lineOf(zero, "\"id\": 0"), "objects[0].id: ids start at 1; 0 is not an id");
     const std::string negative = replaced(kScene, "\"id\": 1,", "\"id\": -4,");
-    checkRefused(negative, lineOf(negative, "\"id\": -4"), "an id is a whole number from 1 to 4294967295");
+    checkRefused(negative, lineOf(negative, "\"id\": -4"), "id -4 is out of range: an id is a whole number from 1 to 16777215");
     const std::string noId = replaced(kScene, "      \"id\": 1,\n", "");
     checkRefused(noId, lineOf(noId, "\"objects\": [") + 1, "objects[0]: no \"id\"");
     const std::string material = replaced(kScene, "\"material\": \"marble\"", "\"material\": \"granite\"");
@@ -245,4 +245,29 @@ TEST_CASE("JSON syntax errors name the line and say plainly what is wrong", "[ed
     checkRefused(deep, 2, "nested more than 32 deep");
     // A byte order mark is no error.
     CHECK(editorSceneFromJson("\xEF\xBB\xBF{\"stoa_scene\": 1}", "scene.json").objects.empty());
+}
+
+TEST_CASE("An id past EditorScene::kMaxId is refused with the file, its line, the id and the range", "[editor][scene-file]") {
+    // 4294967295 used to load, and the editor's next spawn wrapped to id 0,
+    // which it saved and could not open again.
+    TempFolder folder("editor-scene");
+    const std::string huge = replaced(kScene, "\"id\": 3", "\"id\": 4294967295");
+    const fs::path file = folder.write("huge.json", huge);
+    try {
+        (void)loadEditorScene(file);
+        FAIL("loaded an id the editor cannot follow");
+    } catch (const InputError& error) {
+        CHECK(error.file() == file.string());
+        CHECK(error.line() == lineOf(huge, "4294967295"));
+        CHECK(std::string(error.what()) == file.string() + ":" + std::to_string(lineOf(huge, "4294967295")) +
+                                               ": lights[0].id: id 4294967295 is out of range: an id is a whole number "
+                                               "from 1 to 16777215");
+    }
+    const std::string past = replaced(kScene, "\"id\": 3", "\"id\": 16777216");
+    checkRefused(past, lineOf(past, "16777216"), "lights[0].id: id 16777216 is out of range");
+    const std::string endless = replaced(kScene, "\"id\": 3", "\"id\": 123456789012345678901234567890");
+    checkRefused(endless, lineOf(endless, "1234567"), "lights[0].id: expected a whole number from 1 to 16777215");
+    CHECK(EditorScene::kMaxId == 16777215u);
+    const std::string largest = replaced(kScene, "\"id\": 3", "\"id\": 16777215");
+    CHECK(editorSceneFromJson(largest, "scene.json").lights[0].id == EditorScene::kMaxId);
 }

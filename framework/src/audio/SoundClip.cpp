@@ -99,15 +99,31 @@ std::string describeVorbisError(int error) {
 
 SoundClip decodeOgg(const std::uint8_t* bytes, std::size_t size, const std::string& name) {
     checkOggPages(bytes, size, name);
+    // stb_vorbis sizes its tables from the stream's setup header, which a bit flip
+    // (with the checksums fixed) can make ask for gigabytes; given a buffer of its
+    // own, it takes every table from there and fails at once when it would not fit.
+    std::vector<char> arena(SoundClip::maxDecoderBytes);
+    const stb_vorbis_alloc alloc{arena.data(), static_cast<int>(arena.size())};
     int error = 0;
-    std::unique_ptr<stb_vorbis, void (*)(stb_vorbis*)> vorbis(
-        stb_vorbis_open_memory(bytes, int(size), &error, nullptr), stb_vorbis_close);
+    std::unique_ptr<stb_vorbis, void (*)(stb_vorbis*)> vorbis(stb_vorbis_open_memory(bytes, int(size), &error, &alloc),
+                                                              stb_vorbis_close);
+    if (!vorbis && error == VORBIS_outofmem)
+        throw InputError(name, 0, "cannot decode the Ogg Vorbis stream: its setup header asks for more than " +
+                                      std::to_string(SoundClip::maxDecoderBytes >> 20) +
+                                      " MiB of decoder tables, which no sound clip needs: the stream is corrupt");
     if (!vorbis) throw InputError(name, 0, "cannot decode the Ogg Vorbis stream: " + describeVorbisError(error));
     const stb_vorbis_info info = stb_vorbis_get_info(vorbis.get());
     checkFormat(name, info.channels, int(info.sample_rate));
 
     const int channels = info.channels;
     const std::size_t limit = maxFrames(int(info.sample_rate));
+    // The length the last page declares, before anything is decoded.
+    const std::size_t declared = stb_vorbis_stream_length_in_samples(vorbis.get());
+    if (declared > limit) {
+        throw InputError(name, 0, "the sound is longer than " + std::to_string(int(SoundClip::maxSeconds)) +
+                                      " seconds (its last page says " + std::to_string(declared) +
+                                      " samples); expected a short clip");
+    }
     std::vector<std::int16_t> samples;
     std::vector<short> block(4096 * std::size_t(channels));
     for (;;) {

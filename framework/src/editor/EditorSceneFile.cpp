@@ -1,6 +1,7 @@
 #include <stoa/editor/EditorSceneFile.hpp>
 
 #include "JsonDocument.hpp"
+#include "SafeSave.hpp"
 
 #include <stoa/core/InputError.hpp>
 #include <stoa/core/InputFile.hpp>
@@ -8,19 +9,12 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <atomic>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <initializer_list>
 #include <map>
 #include <stdexcept>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace stoa {
 
@@ -203,10 +197,14 @@ private:
 
     std::uint32_t id(const Value& value, const std::string& where, const std::string& name) {
         if (value.kind != Value::Kind::Number || !value.whole)
-            fail(value.line, where + ": expected a whole number from 1, found " + json::describe(value));
+            fail(value.line, where + ": expected a whole number from 1 to " + std::to_string(EditorScene::kMaxId) + ", found " +
+                                 json::describe(value));
         if (value.fitsInteger && value.integer == 0) fail(value.line, where + ": ids start at 1; 0 is not an id");
-        if (!value.fitsInteger || value.integer < 0 || value.integer > UINT32_MAX)
-            fail(value.line, where + ": an id is a whole number from 1 to 4294967295, found " + value.text);
+        // Past kMaxId the editor could not number the next object after it.
+        if (!value.fitsInteger || value.integer < 0 || value.integer > EditorScene::kMaxId) {
+            fail(value.line, where + ": id " + quoteInput(value.text, 24) + " is out of range: an id is a whole number from 1 to " +
+                                 std::to_string(EditorScene::kMaxId));
+        }
         const auto id = static_cast<std::uint32_t>(value.integer);
         const std::string owner = where.substr(0, where.rfind('.'));
         const auto [first, inserted] = m_ids.emplace(id, IdUse{owner, name, value.line});
@@ -559,82 +557,6 @@ private:
     std::string m_out;
 };
 
-std::string describeWriteError(int error, const fs::path& folder) {
-    switch (error) {
-    case ENOENT:
-    case ENOTDIR: return "the folder " + folder.string() + " does not exist";
-    case EACCES:
-    case EPERM: return "permission denied: cannot write in the folder " + folder.string();
-    case ENOSPC: return "the disk is full";
-    case EDQUOT: return "the disk quota is used up";
-    case EROFS: return "the folder " + folder.string() + " is on a read-only file system";
-    case EISDIR: return "this is a folder, not a file";
-    default: return std::strerror(error);
-    }
-}
-
-/// Writes all of `text` to `fd`, then flushes it to the disk; errno on failure.
-bool writeAll(int fd, const std::string& text) {
-    std::size_t written = 0;
-    while (written < text.size()) {
-        const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            return false;
-        }
-        written += static_cast<std::size_t>(n);
-    }
-    return ::fsync(fd) == 0;
-}
-
-/// Replaces `file` with `text` in one rename: the text goes to a new file
-/// beside it (same folder, so same file system), which is flushed to the disk
-/// and then renamed over `file`. Whatever happens, `file` holds either its old
-/// bytes or all the new ones.
-void replaceFile(const fs::path& file, const std::string& text) {
-    const std::string name = file.string();
-    if (name.empty()) throw InputError(name, 0, "cannot save the scene: no file was named (the path is empty)");
-    fs::path target = file;
-    // Save through a symbolic link into the file it names, not over the link.
-    std::error_code ignored;
-    if (fs::is_symlink(file, ignored)) {
-        const fs::path resolved = fs::weakly_canonical(file, ignored);
-        if (!ignored) target = resolved;
-    }
-    const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    struct stat existing {};
-    const bool exists = ::stat(target.c_str(), &existing) == 0;
-    if (exists && S_ISDIR(existing.st_mode)) throw InputError(name, 0, "cannot save the scene: this is a folder, not a file");
-
-    static std::atomic<unsigned> counter{0};
-    fs::path temporary;
-    int fd = -1;
-    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
-        temporary = folder / ("." + target.filename().string() + ".saving-" + std::to_string(::getpid()) + "-" +
-                              std::to_string(counter++));
-        fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd < 0 && errno != EEXIST) break;
-    }
-    if (fd < 0) throw InputError(name, 0, "cannot save the scene: " + describeWriteError(errno, folder));
-
-    // A scene saved over an existing one keeps its permissions.
-    if (exists) (void)::fchmod(fd, existing.st_mode & 07777);
-    const bool written = writeAll(fd, text);
-    int error = written ? 0 : errno;
-    if (::close(fd) != 0 && error == 0) error = errno;
-    if (error == 0 && ::rename(temporary.c_str(), target.c_str()) != 0) error = errno;
-    if (error != 0) {
-        ::unlink(temporary.c_str());
-        throw InputError(name, 0, "cannot save the scene: " + describeWriteError(error, folder));
-    }
-    // The rename itself reaches the disk with the folder's entry.
-    const int folderFd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (folderFd >= 0) {
-        (void)::fsync(folderFd);
-        ::close(folderFd);
-    }
-}
-
 } // namespace
 
 EditorScene editorSceneFromJson(const std::string& text, const std::string& fileForMessages) {
@@ -642,9 +564,14 @@ EditorScene editorSceneFromJson(const std::string& text, const std::string& file
     return SceneReader(fileForMessages).read(root);
 }
 
-std::string editorSceneToJson(const EditorScene& scene) { return SceneWriter().write(scene); }
+std::string editorSceneToJson(const EditorScene& scene) {
+    // What the reader would refuse is not written: a saved file loads again.
+    if (const std::string problem = scene.idProblem(); !problem.empty()) throw std::invalid_argument(problem);
+    return SceneWriter().write(scene);
+}
 
 EditorScene loadEditorScene(const fs::path& file) {
+    removeStaleSaves(file);
     return editorSceneFromJson(readInputFile(file, EditorSceneFileLimits::maxFileBytes, "a scene file"), file.string());
 }
 
@@ -655,7 +582,7 @@ void saveEditorScene(const EditorScene& scene, const fs::path& file) {
     } catch (const std::invalid_argument& error) {
         throw InputError(file.string(), 0, std::string("cannot save the scene: ") + error.what());
     }
-    replaceFile(file, text);
+    saveFileSafely(file, text, "the scene");
 }
 
 } // namespace stoa

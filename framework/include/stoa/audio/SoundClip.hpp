@@ -24,6 +24,9 @@ public:
     static constexpr double maxSeconds = 600.0;              // 10 minutes decoded at most
     static constexpr int minSampleRate = 8000;               // hertz
     static constexpr int maxSampleRate = 192000;
+    /// All the memory stb_vorbis may take for an Ogg stream's decoder (its
+    /// tables and buffers); the shipped clips need under 1 MiB.
+    static constexpr std::size_t maxDecoderBytes = 4u << 20;
 
     SoundClip() = default;
     /// `samples` interleaved, channels 1 or 2, a whole number of frames;

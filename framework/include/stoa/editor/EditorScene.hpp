@@ -29,7 +29,7 @@ struct EditorMaterial {
 
 /// Something drawn: a mesh with a material, placed by position, rotation and scale.
 struct EditorObject {
-    std::uint32_t id = 0;        // > 0, unique among the scene's objects and lights, kept by save and load
+    std::uint32_t id = 0;        // 1 to EditorScene::kMaxId, unique among the scene's objects and lights, kept by save and load
     std::string name;
     std::string mesh;            // "shape:cube", "shape:sphere", "shape:cylinder", "shape:plane", or an OBJ asset name
     std::string material;        // the name of one of the scene's materials
@@ -40,7 +40,7 @@ struct EditorObject {
 
 /// A point light the editor can move and switch.
 struct EditorLight {
-    std::uint32_t id = 0;        // > 0, in the same id space as the objects
+    std::uint32_t id = 0;        // 1 to EditorScene::kMaxId, in the same id space as the objects
     std::string name;
     glm::vec3 position{0.0f};
     glm::vec3 color{1.0f};       // linear RGB, intensity folded in (may exceed 1)
@@ -94,6 +94,11 @@ struct EditorCamera {
 struct EditorScene {
     /// The scene-file format this build writes; it reads versions 1 to this.
     static constexpr int kFormatVersion = 2;   // 2: field, light_swarm, renderer.sky and .culling
+    /// The largest id of an object or light, 2^24 - 1. A scene file with a
+    /// larger id is refused, and nextId() never passes it, so every scene the
+    /// editor saves loads again. Ids from 2^24 up are free for things drawn
+    /// that are not objects (the editor's field copies in the ids view).
+    static constexpr std::uint32_t kMaxId = (1u << 24) - 1;
 
     glm::vec3 ambient{0.1f};
     glm::vec3 sunDirection{-0.4f, -1.0f, -0.3f};   // the way the sunlight travels
@@ -115,8 +120,16 @@ struct EditorScene {
     /// The material called `name`; nullptr when there is none.
     const EditorMaterial* findMaterial(const std::string& name) const;
     EditorMaterial* findMaterial(const std::string& name);
-    /// One more than the largest id of any object or light (1 for an empty scene).
+    /// One more than the largest id of any object or light (1 for an empty
+    /// scene); when that would pass kMaxId, the smallest id that no object or
+    /// light has. Never 0, never past kMaxId. Throws std::length_error when
+    /// every id from 1 to kMaxId is taken (a scene file is too small to hold
+    /// that many).
     std::uint32_t nextId() const;
+    /// The first id a scene file cannot hold, said as "objects[1].id is 0, but
+    /// ..." (0, past kMaxId, or the id of another object or light); empty when
+    /// every id can be saved.
+    std::string idProblem() const;
     /// Appends an object with the next id and returns it (invalidates references into `objects`).
     EditorObject& addObject(std::string name, std::string mesh, std::string material);
     /// Removes the object with `id`; false when there is none.

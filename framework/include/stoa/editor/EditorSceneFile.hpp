@@ -16,7 +16,8 @@
 // of the offending value and what was expected. JSON that is not well formed,
 // a key the format does not know (with the keys allowed there), a value of the
 // wrong type, a version newer than this build reads, a missing version, an id
-// that is 0 or used twice, an object whose material does not exist, a value
+// that is 0, past EditorScene::kMaxId or used twice, an object whose material
+// does not exist, a value
 // out of its range. A missing key takes the default of its field in
 // EditorScene.hpp.
 //
@@ -44,18 +45,25 @@ EditorScene editorSceneFromJson(const std::string& text, const std::string& file
 
 /// The scene file's text for `scene`, in the current format version.
 /// Throws std::invalid_argument naming the field when a number is not finite
-/// (NaN or infinity has no JSON spelling).
+/// (NaN or infinity has no JSON spelling) or an id is one the reader refuses
+/// (0, past EditorScene::kMaxId, used twice): what is saved loads again.
 std::string editorSceneToJson(const EditorScene& scene);
 
 /// Reads the scene file at `file` (at most EditorSceneFileLimits::maxFileBytes).
+/// First removes the temporary files that saves of it killed mid-way left
+/// beside it (`.NAME.saving-PID-N` of a process that no longer runs).
 EditorScene loadEditorScene(const std::filesystem::path& file);
 
 /// Writes `scene` to `file` without ever leaving it half written: the text goes
-/// to a temporary file beside it, which then replaces it in one rename (a
-/// program that dies mid-save leaves the old file whole). Throws InputError
-/// naming the file when it cannot be written (no such folder, no permission,
-/// disk full, a number that is not finite); the old file is then unchanged and
-/// no temporary file is left.
+/// to a temporary file beside it, flushed to the disk, which then replaces it
+/// in one rename (a program that dies mid-save leaves the old file whole; the
+/// next open or save removes its temporary file). A symbolic link is followed
+/// and its target written, so the link stays a link. Throws InputError naming
+/// the file when it cannot or must not be written: no such folder, no
+/// permission, disk full, a number that is not finite, a bad id, a read-only
+/// file, a FIFO, a device, a folder or anything else that is not a regular
+/// file, a symbolic link loop. The old file is then unchanged and no temporary
+/// file is left.
 void saveEditorScene(const EditorScene& scene, const std::filesystem::path& file);
 
 } // namespace stoa
