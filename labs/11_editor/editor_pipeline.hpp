@@ -377,7 +377,8 @@ private:
         }
     }
 
-    static constexpr std::uint32_t kFirstFieldId = EditorScene::kMaxId + 1;   // past any scene's ids: every copy its own colour
+    // Past any scene's ids (a scene file's are at most kMaxId): every copy its own colour.
+    static constexpr std::uint32_t kFirstFieldId = EditorScene::kMaxId + 1;
 
     struct Placement {
         std::size_t mesh = 0;

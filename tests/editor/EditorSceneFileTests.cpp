@@ -142,7 +142,8 @@ TEST_CASE("Ids, materials and ranges are checked", "[editor][scene-file]") {
     const std::string zero = replaced(kScene, "\"id\": 1,", "\"id\": 0,");
     checkRefused(zero, lineOf(zero, "\"id\": 0"), "objects[0].id: ids start at 1; 0 is not an id");
     const std::string negative = replaced(kScene, "\"id\": 1,", "\"id\": -4,");
-    checkRefused(negative, lineOf(negative, "\"id\": -4"), "id -4 is out of range: an id is a whole number from 1 to 16777215");
+    checkRefused(negative, lineOf(negative, "\"id\": -4"),
+                 "id -4 is out of range: an id is a whole number from 1 to 16777215");
     const std::string noId = replaced(kScene, "      \"id\": 1,\n", "");
     checkRefused(noId, lineOf(noId, "\"objects\": [") + 1, "objects[0]: no \"id\"");
     const std::string material = replaced(kScene, "\"material\": \"marble\"", "\"material\": \"granite\"");
@@ -247,7 +248,8 @@ TEST_CASE("JSON syntax errors name the line and say plainly what is wrong", "[ed
     CHECK(editorSceneFromJson("\xEF\xBB\xBF{\"stoa_scene\": 1}", "scene.json").objects.empty());
 }
 
-TEST_CASE("An id past EditorScene::kMaxId is refused with the file, its line, the id and the range", "[editor][scene-file]") {
+TEST_CASE("An id past EditorScene::kMaxId is refused with the file, its line, the id and the range",
+          "[editor][scene-file]") {
     // 4294967295 used to load, and the editor's next spawn wrapped to id 0,
     // which it saved and could not open again.
     TempFolder folder("editor-scene");

@@ -44,7 +44,8 @@ std::string readText(const fs::path& path) {
 /// The names in `folder`, sorted.
 std::vector<std::string> namesIn(const fs::path& folder) {
     std::vector<std::string> names;
-    for (const fs::directory_entry& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder))
+        names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -104,7 +105,8 @@ TEST_CASE("A FIFO in the scene file's place is refused without blocking", "[edit
         ::_exit(1);
     }
     int status = -1;
-    for (int i = 0; i < 500 && ::waitpid(child, &status, WNOHANG) == 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    for (int i = 0; i < 500 && ::waitpid(child, &status, WNOHANG) == 0; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
     if (::waitpid(child, &status, WNOHANG) == 0) {
         ::kill(child, SIGKILL);
         ::waitpid(child, &status, 0);
@@ -116,7 +118,8 @@ TEST_CASE("A FIFO in the scene file's place is refused without blocking", "[edit
     CHECK(namesIn(folder.path()) == std::vector<std::string>{"level.json"});
 }
 
-TEST_CASE("A device, directly or through a link, is refused and nothing is written", "[editor][scene-file][safe-save]") {
+TEST_CASE("A device, directly or through a link, is refused and nothing is written",
+          "[editor][scene-file][safe-save]") {
     TempFolder folder("editor-save");
     CHECK(contains(refusal("/dev/null"), "it is a character device, not a regular file"));
     CHECK(fs::is_character_file("/dev/null"));
@@ -135,7 +138,8 @@ TEST_CASE("A folder in the scene file's place is refused, saying what it is", "[
     CHECK(fs::is_directory(folder / "level.json"));
 }
 
-TEST_CASE("A save through a symbolic link writes the link's target and the link stays a link", "[editor][scene-file][safe-save]") {
+TEST_CASE("A save through a symbolic link writes the link's target and the link stays a link",
+          "[editor][scene-file][safe-save]") {
     TempFolder folder("editor-save");
     const fs::path target = folder.write("real/level.json", "the old scene\n");
     fs::create_symlink("real/level.json", folder / "link.json");   // relative to the link's folder
@@ -184,9 +188,11 @@ TEST_CASE("Temporary files of killed saves are removed on save and open, never a
     const std::string dead = std::to_string(deadPid());
     const std::string mine = std::to_string(::getpid());
     const fs::path file = folder.write("level.json", kScene);
-    const std::vector<std::string> kept = {".level.json.saving-" + mine + "-3", ".level.json.saving-1-0",   // running
-                                           ".level.json.saving-" + dead, ".level.json.saving-" + dead + "-x",   // not the pattern
-                                           ".other.json.saving-" + dead + "-0"};                               // another file's
+    // Kept: of running processes (this one, and 1, which always runs), not
+    // the pattern, another file's.
+    const std::vector<std::string> kept = {".level.json.saving-" + mine + "-3", ".level.json.saving-1-0",
+                                           ".level.json.saving-" + dead, ".level.json.saving-" + dead + "-x",
+                                           ".other.json.saving-" + dead + "-0"};
     const std::vector<std::string> stale = {".level.json.saving-" + dead + "-0", ".level.json.saving-" + dead + "-17"};
     const auto plant = [&](const std::vector<std::string>& names) {
         for (const std::string& name : names) folder.write(name, "half a scene");

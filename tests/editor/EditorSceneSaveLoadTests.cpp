@@ -225,7 +225,8 @@ private:
         const EditorObject copy = scene.objects[index];
         perform(scene, {[id = copy.id](EditorScene& s) { s.removeObject(id); },
                         [copy, index](EditorScene& s) {
-                            s.objects.insert(s.objects.begin() + static_cast<long>(std::min(index, s.objects.size())), copy);
+                            const std::size_t at = std::min(index, s.objects.size());
+                            s.objects.insert(s.objects.begin() + static_cast<long>(at), copy);
                         }});
     }
 

@@ -57,14 +57,17 @@ std::string EditorScene::idProblem() const {
     std::map<std::uint32_t, std::string> owners;
     const auto problem = [&](std::uint32_t id, const std::string& where) -> std::string {
         if (id == 0 || id > kMaxId)
-            return where + ".id is " + std::to_string(id) + ", but an id is a whole number from 1 to " + std::to_string(kMaxId);
+            return where + ".id is " + std::to_string(id) + ", but an id is a whole number from 1 to " +
+                   std::to_string(kMaxId);
         const auto [first, inserted] = owners.emplace(id, where);
         return inserted ? std::string() : where + ".id " + std::to_string(id) + " is also the id of " + first->second;
     };
     for (std::size_t i = 0; i < objects.size(); ++i)
-        if (std::string found = problem(objects[i].id, "objects[" + std::to_string(i) + "]"); !found.empty()) return found;
+        if (std::string found = problem(objects[i].id, "objects[" + std::to_string(i) + "]"); !found.empty())
+            return found;
     for (std::size_t i = 0; i < lights.size(); ++i)
-        if (std::string found = problem(lights[i].id, "lights[" + std::to_string(i) + "]"); !found.empty()) return found;
+        if (std::string found = problem(lights[i].id, "lights[" + std::to_string(i) + "]"); !found.empty())
+            return found;
     return "";
 }
 

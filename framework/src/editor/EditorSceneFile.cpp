@@ -197,12 +197,13 @@ private:
 
     std::uint32_t id(const Value& value, const std::string& where, const std::string& name) {
         if (value.kind != Value::Kind::Number || !value.whole)
-            fail(value.line, where + ": expected a whole number from 1 to " + std::to_string(EditorScene::kMaxId) + ", found " +
-                                 json::describe(value));
+            fail(value.line, where + ": expected a whole number from 1 to " + std::to_string(EditorScene::kMaxId) +
+                                 ", found " + json::describe(value));
         if (value.fitsInteger && value.integer == 0) fail(value.line, where + ": ids start at 1; 0 is not an id");
         // Past kMaxId the editor could not number the next object after it.
         if (!value.fitsInteger || value.integer < 0 || value.integer > EditorScene::kMaxId) {
-            fail(value.line, where + ": id " + quoteInput(value.text, 24) + " is out of range: an id is a whole number from 1 to " +
+            fail(value.line, where + ": id " + quoteInput(value.text, 24) +
+                                 " is out of range: an id is a whole number from 1 to " +
                                  std::to_string(EditorScene::kMaxId));
         }
         const auto id = static_cast<std::uint32_t>(value.integer);

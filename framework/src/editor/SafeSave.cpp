@@ -152,7 +152,10 @@ void saveFileSafely(const fs::path& file, const std::string& text, const std::st
     if (name.empty()) refuse("no file was named (the path is empty)");
     // Through a symbolic link into the file it names: the link stays a link.
     const std::optional<fs::path> followed = followLinks(file);
-    if (!followed) refuse("it is a symbolic link loop (following the links never reaches a file); remove a link or save under another name");
+    if (!followed) {
+        refuse("it is a symbolic link loop (following the links never reaches a file); remove a link or save under "
+               "another name");
+    }
     const fs::path& target = *followed;
     const std::string subject = target == file ? "it" : "the link's target " + target.string();
     if (const std::string why = whyNotReplace(target, subject); !why.empty()) refuse(why);
@@ -184,7 +187,8 @@ void saveFileSafely(const fs::path& file, const std::string& text, const std::st
 void removeStaleSaves(const fs::path& file) {
     const std::optional<fs::path> target = followLinks(file);
     if (!target || target->filename().empty()) return;
-    removeStaleTemporaries(target->has_parent_path() ? target->parent_path() : fs::path("."), target->filename().string());
+    const fs::path folder = target->has_parent_path() ? target->parent_path() : fs::path(".");
+    removeStaleTemporaries(folder, target->filename().string());
 }
 
 } // namespace stoa

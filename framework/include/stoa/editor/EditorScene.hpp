@@ -29,7 +29,7 @@ struct EditorMaterial {
 
 /// Something drawn: a mesh with a material, placed by position, rotation and scale.
 struct EditorObject {
-    std::uint32_t id = 0;        // 1 to EditorScene::kMaxId, unique among the scene's objects and lights, kept by save and load
+    std::uint32_t id = 0;        // 1 to EditorScene::kMaxId, unique among objects and lights, kept by save and load
     std::string name;
     std::string mesh;            // "shape:cube", "shape:sphere", "shape:cylinder", "shape:plane", or an OBJ asset name
     std::string material;        // the name of one of the scene's materials
