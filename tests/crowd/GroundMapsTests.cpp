@@ -260,13 +260,15 @@ TEST_CASE("Ground maps: a map under 2 x 2 texels is refused naming the world fil
     CHECK_NOTHROW(loadGroundMaps(description(folder / "two.png", folder / "two.png"), folder / "world.xml"));
 }
 
-TEST_CASE("Ground maps: a missing map is refused naming its own file", "[crowd][ground]") {
+TEST_CASE("Ground maps: a map that does not load is refused at the world's <ground> line, naming the map",
+          "[crowd][ground][issue25]") {
     const TempFolder folder("ground-maps");
     greyImage(2, 2, {255, 255, 255, 255}).savePng(folder / "two.png");
-    const std::string missing = (folder / "missing.png").string();
-    expectMapError(description(folder / "missing.png", ""), folder / "world.xml", missing, 0, "missing.png");
-    expectMapError(description(folder / "two.png", folder / "missing.png"), folder / "world.xml", missing, 0,
-                   "missing.png");
+    const std::string world = (folder / "world.xml").string(), missing = (folder / "missing.png").string();
+    expectMapError(description(folder / "missing.png", ""), folder / "world.xml", world, 17,
+                   "<ground> collision map: " + missing);
+    expectMapError(description(folder / "two.png", folder / "missing.png"), folder / "world.xml", world, 17,
+                   "<ground> height map: " + missing);
 }
 
 TEST_CASE("Ground maps: flatGround is walkable everywhere at height 0", "[crowd][ground]") {

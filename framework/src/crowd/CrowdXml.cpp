@@ -568,6 +568,7 @@ void Loader::readType(const XmlFile& file, pugi::xml_node node) {
     type.radius = number(file, node, "radius", type.radius, Range::Positive);
     type.behaviour = requiredText(file, node, "behaviour");
     type.line = file.line(node);
+    type.file = file.name();
     const int earlier = m_types.add(type.name);
     if (earlier >= 0) {
         file.fail(node, "the type '" + quoteInput(type.name) + "' is defined twice; the first is at " + m_typeFiles[earlier] +

@@ -34,7 +34,16 @@ void requireSize(int width, int height, const std::filesystem::path& map, const 
 
 GroundMaps loadGroundMaps(const GroundDescription& ground, const std::filesystem::path& worldFile) {
     GroundMaps maps;
-    const Image collision = Image::load(ground.collisionMap, 1);
+    // A map's own message (its file, what is wrong), after the world's line that named it.
+    const auto named = [&](const char* which, const InputError& error) {
+        return InputError(worldFile.string(), ground.line, std::string("<ground> ") + which + ": " + error.what());
+    };
+    Image collision;
+    try {
+        collision = Image::load(ground.collisionMap, 1);
+    } catch (const InputError& error) {
+        throw named("collision map", error);
+    }
     requireSize(collision.width(), collision.height(), ground.collisionMap, worldFile, ground.line);
     maps.collision.grid = gridOf(ground, collision.width(), collision.height());
     maps.collision.walkable.resize(static_cast<std::size_t>(collision.width()) * collision.height());
@@ -48,7 +57,12 @@ GroundMaps loadGroundMaps(const GroundDescription& ground, const std::filesystem
         maps.heights.values = {0.0f};
         return maps;
     }
-    HeightSamples heights = loadHeightSamples(ground.heightMap);
+    HeightSamples heights;
+    try {
+        heights = loadHeightSamples(ground.heightMap);
+    } catch (const InputError& error) {
+        throw named("height map", error);
+    }
     requireSize(heights.width, heights.height, ground.heightMap, worldFile, ground.line);
     maps.heights.grid = gridOf(ground, heights.width, heights.height);
     maps.heights.values = std::move(heights.values);

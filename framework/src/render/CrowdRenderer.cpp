@@ -1,5 +1,7 @@
 #include <stoa/render/CrowdRenderer.hpp>
 
+#include <stoa/core/InputError.hpp>
+
 #include <stoa/core/Assert.hpp>
 #include <stoa/crowd/GroundMaps.hpp>
 #include <stoa/geometry/DebugLines.hpp>
@@ -124,7 +126,13 @@ Mesh md2PoseMesh(const Md2Model& model, const Md2FramePair& frames, const CrowdF
 CrowdRenderer::CrowdRenderer(const CrowdPrograms& programs, const CrowdSimulation& simulation)
     : m_programs(programs), m_lines(*programs.lines) {
     const CrowdWorld& world = simulation.world();
-    for (const AgentType& type : world.types) m_models.push_back(uploadMd2(type.model, type.skin, type.scale));
+    for (const AgentType& type : world.types) {
+        try {
+            m_models.push_back(uploadMd2(type.model, type.skin, type.scale));
+        } catch (const InputError& error) {   // the model's or skin's own message, after the line that named it
+            throw InputError(type.file.string(), type.line, "the type '" + type.name + "' cannot be drawn: " + error.what());
+        }
+    }
     const GroundGrid& grid = simulation.maps().collision.grid;
     m_sceneMin = glm::vec3(grid.footprintMin.x, world.ground.heightMin, grid.footprintMin.y);
     m_sceneMax = glm::vec3(grid.footprintMax.x, std::max(world.ground.heightMax, world.ground.heightMin) + 3.0f,

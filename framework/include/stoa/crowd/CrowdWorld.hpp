@@ -123,6 +123,7 @@ struct AgentType {
     float radius = 0.4f;            // metres, for reach and spacing
     std::string behaviour;          // a Behaviour's name
     int behaviourIndex = -1;        // index into CrowdWorld::behaviours, set by the loader
+    std::filesystem::path file;     // the XML file that defines it (the world's or an include)
     int line = 0;
 };
 
