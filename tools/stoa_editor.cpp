@@ -105,6 +105,7 @@ int main(int argc, char** argv) {
     stoa::EditorLabApp app;
     app.soundInWindow = std::find(forwarded.begin(), forwarded.end(), "--render") == forwarded.end() &&
                         std::find(forwarded.begin(), forwarded.end(), "--screenshot") == forwarded.end();
+    app.stopOnMissingAssets = !app.soundInWindow;   // a picture with a piece missing is not the scene
     return stoa::runLabOnCase(app, STOA_LAB_BUILD_INFO, argv[0], "Stoa editor -- " + scene.filename().string(), cases.str(),
                               "scene", forwarded);
 }

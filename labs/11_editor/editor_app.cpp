@@ -105,10 +105,11 @@ void EditorLabApp::render(glm::ivec2 size) {
     }
     if (m_view == View::Stencil) {
         drawStencilView();
-        return;
+    } else {
+        drawShaded();
+        drawSelection();
     }
-    drawShaded();
-    drawSelection();
+    if (stopOnMissingAssets && !m_assets->failures().empty()) throwMissingAsset(m_assets->failures().front());
 }
 
 void EditorLabApp::update(float seconds) {

@@ -122,6 +122,10 @@ public:
     /// sound where it happens, a crowd's agents make footsteps (deferred
     /// pipeline), and the listener follows the camera (k mutes).
     bool soundInWindow = false;
+    /// A picture made from the command line (--render, --screenshot) stops at an
+    /// asset the scene names that does not load, naming the scene file's line:
+    /// a picture with a piece missing is not the scene.
+    bool stopOnMissingAssets = false;
     /// The deferred pipeline waits for each pass to finish, so that its
     /// statistics hold each pass's own time (the showcase benchmark).
     bool timePasses = false;
@@ -248,6 +252,8 @@ private:
     /// A scene file's textures, models and programs: reloaded when their files
     /// change (your assetsToReload() decides when), the log printed.
     void reloadChangedAssets();
+    /// stopOnMissingAssets: an InputError at the scene file's line that names the asset.
+    [[noreturn]] void throwMissingAsset(const EditorAssets::Failure& failure) const;
 
     void updateSound(const Camera& camera);
 

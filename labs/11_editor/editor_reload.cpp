@@ -3,6 +3,10 @@
 
 #include "editor_app.hpp"
 
+#include <stoa/core/InputFile.hpp>
+
+#include <algorithm>
+
 namespace stoa {
 
 void EditorLabApp::saveFile(const std::string& name, double seconds) {
@@ -72,6 +76,18 @@ void EditorLabApp::updateSound(const Camera& camera) {
 
 void EditorLabApp::playSound(SoundBuffer buffer, const glm::vec3& where) {
     if (m_sound && m_sound->enabled() && buffer.id != 0) m_sound->play(buffer, where, 0.8f);
+}
+
+void EditorLabApp::throwMissingAsset(const EditorAssets::Failure& failure) const {
+    // The line of the scene file that names the asset (the first that does), or 0.
+    int line = 0;
+    try {
+        const std::string text = readInputFile(m_sceneFile, EditorSceneFileLimits::maxFileBytes, "a scene file");
+        const std::size_t at = text.find("\"" + failure.name + "\"");
+        if (at != std::string::npos) line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+    } catch (const InputError&) {   // the scene file went away: name it without a line
+    }
+    throw InputError(m_sceneFile.string(), line, failure.message);
 }
 
 void EditorLabApp::log(const std::string& line) {

@@ -117,8 +117,26 @@ AssetCache& EditorAssets::cacheFor(const std::string& name) {
     return *m_assets;
 }
 
+namespace {
+
+/// Whether an asset name stays inside the folders it is looked up in: not
+/// absolute, no ".." that climbs out ("../../etc/passwd" is not an asset).
+bool staysInside(const std::string& name) {
+    const fs::path path = fs::path(name).lexically_normal();
+    return !path.is_absolute() && !path.has_root_name() && (path.empty() || *path.begin() != "..");
+}
+
+std::string outsideMessage(const char* what, const std::string& name) {
+    return std::string("cannot load the ") + what + " " + name +
+           ": an asset name is a path inside the scene file's folder or assets/, not absolute and not climbing out with ..";
+}
+
+} // namespace
+
 void EditorAssets::failedOnce(const std::string& name, const std::string& message) {
-    if (m_failed.insert(name).second) m_log.push_back(message);
+    if (!m_failed.insert(name).second) return;
+    m_log.push_back(message);
+    m_failures.push_back({name, message});
 }
 
 std::vector<const GpuMesh*> EditorAssets::meshes(const std::string& name) {
@@ -127,6 +145,10 @@ std::vector<const GpuMesh*> EditorAssets::meshes(const std::string& name) {
     if (model == m_models.end()) {
         if (m_failed.count(name) || name.rfind("shape:", 0) == 0) {
             failedOnce(name, "no mesh '" + name + "': shapes are shape:cube, shape:sphere, shape:cylinder, shape:plane");
+            return {};
+        }
+        if (!staysInside(name)) {
+            failedOnce(name, outsideMessage("mesh", name));
             return {};
         }
         try {
@@ -138,6 +160,7 @@ std::vector<const GpuMesh*> EditorAssets::meshes(const std::string& name) {
     }
     std::vector<const GpuMesh*> meshes;
     for (const GpuModelPart& part : model->second->parts) meshes.push_back(part.mesh.get());
+    if (meshes.empty()) failedOnce(name, "the mesh " + name + " has no triangles: is it an OBJ file?");
     return meshes;
 }
 
@@ -146,6 +169,10 @@ const AssetRef<CrowdWorld>* EditorAssets::crowdWorld(const std::string& name) {
     auto world = m_worlds.find(name);
     if (world == m_worlds.end()) {
         if (m_failed.count(name)) return nullptr;
+        if (!staysInside(name)) {
+            failedOnce(name, outsideMessage("crowd world", name));
+            return nullptr;
+        }
         std::error_code error;
         const bool inCrowds = !fs::exists(m_assets->root() / name, error) && fs::exists(m_assets->root() / "crowds" / name, error);
         const std::string cached = inCrowds && !(m_scene && fs::exists(m_scene->root() / name, error)) ? "crowds/" + name : name;
@@ -164,6 +191,10 @@ const Texture2D* EditorAssets::texture(const std::string& name) {
     auto texture = m_textures.find(name);
     if (texture == m_textures.end()) {
         if (m_failed.count(name)) return nullptr;
+        if (!staysInside(name)) {
+            failedOnce(name, outsideMessage("texture", name));
+            return nullptr;
+        }
         try {
             texture = m_textures.emplace(name, cacheFor(name).get<Texture2D>(name)).first;
         } catch (const InputError& error) {

@@ -48,6 +48,16 @@ public:
     /// Log lines since the last call: reloads, failures, names that did not load.
     std::vector<std::string> takeLog();
 
+    /// An asset the scene names that did not load: its name as the scene
+    /// writes it, and why (the logged line).
+    struct Failure {
+        std::string name;
+        std::string message;
+    };
+    /// Every asset that did not load so far, in the order they failed (a
+    /// picture made from the command line stops at the first: stoa-editor --render).
+    const std::vector<Failure>& failures() const { return m_failures; }
+
     /// The shapes' names, in the order an asset browser lists them.
     static const std::vector<std::string>& shapeNames();
     /// The shape called `name` as a mesh on the CPU, as meshes() draws it (for
@@ -89,6 +99,7 @@ private:
     AssetCache& cacheFor(const std::string& name);
     void failedOnce(const std::string& name, const std::string& message);
 
+    std::vector<Failure> m_failures;
     std::map<std::string, std::shared_ptr<const GpuMesh>> m_shapes;
     std::unique_ptr<AssetCache> m_assets;    // assets/
     std::unique_ptr<AssetCache> m_scene;     // the scene file's folder (none until set)
