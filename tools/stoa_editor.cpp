@@ -62,7 +62,15 @@ int main(int argc, char** argv) {
     std::filesystem::path scene = args[0];
     if (!std::filesystem::exists(scene, error) && scene.parent_path().empty())
         scene = stoa::paths::assetsDir() / "scenes" / scene;
-    if (!std::filesystem::is_regular_file(scene, error)) return usage("no scene file " + args[0]);
+    if (!std::filesystem::is_regular_file(scene, error)) {
+        const std::filesystem::file_status status = std::filesystem::status(scene, error);
+        if (!std::filesystem::exists(status)) return usage("no scene file " + args[0]);
+        const char* what = std::filesystem::is_directory(status) ? "a folder"
+                           : std::filesystem::is_fifo(status)    ? "a FIFO (a named pipe)"
+                           : std::filesystem::is_socket(status)  ? "a socket"
+                                                                 : "a device";
+        return usage(args[0] + " is " + what + ", not a scene file");
+    }
     scene = std::filesystem::absolute(scene).lexically_normal();
 
     std::vector<std::string> forwarded;

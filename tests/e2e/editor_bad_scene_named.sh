@@ -62,6 +62,10 @@ expect 2 "unknown or incomplete flag --frobnicate" bad_material.json --frobnicat
 expect 2 "unknown or incomplete flag --render" bad_material.json --render
 expect 2 "^usage: stoa-editor SCENE\.json"
 expect 2 "no scene file no_such_scene\.json" no_such_scene.json
+# What is there but is not a file (issue 25): said as what it is, and a FIFO never blocks.
+rm -rf a_folder.json pipe.json && mkdir a_folder.json && mkfifo pipe.json
+expect 2 "a_folder\.json is a folder, not a scene file" a_folder.json
+expect 2 "pipe\.json is a FIFO \(a named pipe\), not a scene file" pipe.json
 
 [ "$failures" -eq 0 ] || exit 1
 echo "PASS: broken scenes are named with their line (exit 1), bad command lines get the usage (exit 2)"

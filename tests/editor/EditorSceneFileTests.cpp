@@ -131,7 +131,24 @@ TEST_CASE("Values of the wrong type are refused on their line", "[editor][scene-
     checkRefused(materials, lineOf(materials, "[\"a.xml\"]"), "crowd_world: expected a string");
     checkRefused("{\"stoa_scene\": 1,\n\"objects\": {\"id\": 1}\n}", 2, "objects: expected an array of objects");
     const std::string huge = replaced(kScene, "\"yaw\": 30", "\"yaw\": 1e39");
-    checkRefused(huge, lineOf(huge, "1e39"), "camera.yaw: 1e39 is out of range for a float");
+    checkRefused(huge, lineOf(huge, "1e39"), "camera.yaw: 1e39 is too large for a float");
+}
+
+TEST_CASE("Issue 25: NaN, infinity, numbers too close to 0 and CR line ends get plain messages", "[editor][scene-file][issue25]") {
+    const std::string nan = replaced(kScene, "\"distance\": 12", "\"distance\": nan");
+    checkRefused(nan, lineOf(nan, "nan"), "'nan' is not a number JSON can hold: JSON has no NaN or infinity");
+    const std::string infinity = replaced(kScene, "\"distance\": 12", "\"distance\": -Infinity");
+    checkRefused(infinity, lineOf(infinity, "-Infinity"), "'-Infinity' is not a number JSON can hold");
+    const std::string tiny = replaced(kScene, "\"distance\": 12", "\"distance\": 1e-60");
+    checkRefused(tiny, lineOf(tiny, "1e-60"), "camera.distance: 1e-60 is too close to 0 for a float, which holds it as 0");
+    // Lines ended by a CR alone (old Mac files), and CR LF: the error's line is the same.
+    const std::string wrong = replaced(kScene, "\"distance\": 12", "\"distance\": oops");
+    const int line = lineOf(wrong, "oops");
+    std::string crOnly = wrong, crLf;
+    std::replace(crOnly.begin(), crOnly.end(), '\n', '\r');
+    for (char c : wrong) crLf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    checkRefused(crOnly, line, "'oops' is not a JSON value");
+    checkRefused(crLf, line, "'oops' is not a JSON value");
 }
 
 TEST_CASE("Ids, materials and ranges are checked", "[editor][scene-file]") {

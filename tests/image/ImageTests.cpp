@@ -254,6 +254,10 @@ TEST_CASE("Image: load() names the file and the reason on bad input", "[image]")
         const auto error = inputErrorFrom([&] { pattern(2, 2, 3).savePng(path); });
         REQUIRE(error);
         CHECK(error->file() == path.string());
-        CHECK(error->message() == "cannot write PNG");
+        CHECK(error->message() == "cannot write the PNG: its folder " + (folder / "no-such-folder").string() + " does not exist");
+        std::filesystem::create_directory(folder / "in-the-way.png");
+        const auto blocked = inputErrorFrom([&] { pattern(2, 2, 3).savePng(folder / "in-the-way.png"); });
+        REQUIRE(blocked);
+        CHECK(blocked->message() == "cannot write the PNG: a folder of that name is in the way");
     }
 }

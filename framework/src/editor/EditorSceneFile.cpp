@@ -142,12 +142,17 @@ private:
 
     float number(const Value& value, const std::string& where) const {
         if (value.kind != Value::Kind::Number) fail(value.line, where + ": expected a number, found " + json::describe(value));
-        if (value.outOfRange) fail(value.line, where + ": " + quoteInput(value.text, 24) + " is out of range for a float (about 3.4e38 at most)");
+        if (value.outOfRange) fail(value.line, where + ": " + quoteInput(value.text, 24) + " is too large for a float (about 3.4e38 at most)");
         return value.number;
     }
 
     float positive(const Value& value, const std::string& where, const char* meaning) const {
         const float result = number(value, where);
+        // A non-zero number a float holds as 0 (1e-60): say so, rather than "found 1e-60".
+        const std::string mantissa = value.text.substr(0, value.text.find_first_of("eE"));
+        if (result == 0.0f && mantissa.find_first_of("123456789") != std::string::npos)
+            fail(value.line, where + ": " + quoteInput(value.text, 24) + " is too close to 0 for a float, which holds it as 0; "
+                                     "it must be greater than 0 (" + meaning + ")");
         if (!(result > 0.0f)) fail(value.line, where + ": must be greater than 0 (" + meaning + "), found " + value.text);
         return result;
     }

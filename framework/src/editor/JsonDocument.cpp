@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -28,14 +29,19 @@ struct TextCursor {
     int line = 1;               // the line of the next character
     int tokenLine = 1;          // the line of the last character read that is not white space
     const char* tokenEnd = nullptr;   // that character
+    bool afterReturn = false;   // the last character was a '\r': a '\n' now ends no new line
 
+    // Lines end in LF, CR LF or a CR alone (old Mac files).
     void consume(const char* at) {
         if (*at == '\n') {
+            if (!afterReturn) ++line;
+        } else if (*at == '\r') {
             ++line;
-        } else if (*at != ' ' && *at != '\t' && *at != '\r') {
+        } else if (*at != ' ' && *at != '\t') {
             tokenLine = line;
             tokenEnd = at;
         }
+        afterReturn = *at == '\r';
     }
 };
 
@@ -111,11 +117,32 @@ std::string plainLexerError(const std::string& error, std::string token, const s
     if (startsWith(error, "invalid literal")) {
         if (startsWith(word, "/")) return "a comment: JSON has no comments";
         if (startsWith(word, "'")) return "a single quote: JSON strings and keys are written in double quotes (\"...\")";
-        return "'" + quoteInput(word, 24) +
+        // The lexer stops inside a literal it took for true, false or null ("nan" stops at the
+        // 'a'); its token text ends with what it read of it, the character it stopped at last,
+        // and `word` starts at that character.
+        std::string read = token.substr(0, token.find("<U+"));
+        std::size_t start = read.size();
+        while (start > 0 && (std::isalpha(static_cast<unsigned char>(read[start - 1])) || read[start - 1] == '-')) --start;
+        read = read.substr(start);
+        if (!read.empty()) read.pop_back();
+        const std::string literal = read + word;
+        std::string lower = literal;
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        if (lower == "nan" || lower == "-nan" || lower == "inf" || lower == "-inf" || lower == "infinity" || lower == "-infinity")
+            return "'" + quoteInput(literal, 24) + "' is not a number JSON can hold: JSON has no NaN or infinity; write a finite number";
+        return "'" + quoteInput(literal, 24) +
                "' is not a JSON value (text and keys go in double quotes; true, false and null are lower case)";
     }
     // nlohmann writes a control character it read as <U+000A>: the token is what came before.
     token = token.substr(0, token.find("<U+"));
+    // "-Infinity" and "-nan" stop as numbers, at the letter after the '-'.
+    if (startsWith(error, "invalid number") && token.size() >= 2 && token[0] == '-' &&
+        std::isalpha(static_cast<unsigned char>(token.back()))) {
+        std::string lower = "-" + word;
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        if (lower == "-nan" || lower == "-inf" || lower == "-infinity")
+            return "'-" + quoteInput(word, 24) + "' is not a number JSON can hold: JSON has no NaN or infinity; write a finite number";
+    }
     const std::string quoted = "'" + quoteInput(token, 24) + "'";
     if (startsWith(error, "invalid number"))
         return quoted + " is not a number (numbers are written like 2, -1.5, 0.25, 1e-3: no '+', no leading or trailing '.')";

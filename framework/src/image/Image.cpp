@@ -101,8 +101,16 @@ void Image::savePng(const std::filesystem::path& path) const {
     STOA_ASSERT(!empty(), "Image::savePng(): the image is empty; a PNG needs at least one pixel.");
     const std::string name = path.string();
     const int stride = m_width * m_channels;  // rows are tightly packed
-    if (stbi_write_png(name.c_str(), m_width, m_height, m_channels, m_pixels.data(), stride) == 0)
-        throw InputError(name, 0, "cannot write PNG");
+    if (stbi_write_png(name.c_str(), m_width, m_height, m_channels, m_pixels.data(), stride) == 0) {
+        // stb_image_write says only that it failed: find why, as the user would.
+        std::error_code error;
+        const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+        std::string why = "the file cannot be created or written (no permission, or the disk is full?)";
+        if (!std::filesystem::exists(folder, error)) why = "its folder " + folder.string() + " does not exist";
+        else if (!std::filesystem::is_directory(folder, error)) why = folder.string() + " is not a folder";
+        else if (std::filesystem::is_directory(path, error)) why = "a folder of that name is in the way";
+        throw InputError(name, 0, "cannot write the PNG: " + why);
+    }
 }
 
 glm::u8vec4 Image::pixel(int x, int y) const {
