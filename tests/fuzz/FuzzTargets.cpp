@@ -1,5 +1,7 @@
 #include "FuzzTargets.hpp"
 
+#include <stoa/audio/SoundClip.hpp>
+
 #include <stoa/core/InputError.hpp>
 #include <stoa/crowd/CrowdXml.hpp>
 #include <stoa/editor/EditorSceneFile.hpp>
@@ -136,6 +138,19 @@ bool editorScene(const std::uint8_t* data, std::size_t size) {
         __builtin_trap();
     }
     return true;
+}
+
+bool sound(const std::uint8_t* data, std::size_t size) {
+    try {
+        const SoundClip clip = SoundClip::decode(data, size, "fuzz.ogg");
+        if (clip.channels() < 1 || clip.channels() > 2) __builtin_trap();
+        if (clip.sampleRate() < SoundClip::minSampleRate || clip.sampleRate() > SoundClip::maxSampleRate) __builtin_trap();
+        if (clip.durationSeconds() > SoundClip::maxSeconds + 1.0 || clip.empty()) __builtin_trap();
+        return true;
+    } catch (const InputError& error) {
+        (void)std::string(error.what());
+        return false;
+    }
 }
 
 } // namespace stoa::fuzz

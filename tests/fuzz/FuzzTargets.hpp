@@ -27,6 +27,10 @@ bool crowdXml(const std::uint8_t* data, std::size_t size);
 /// must also save, and read back to the same text.
 bool editorScene(const std::uint8_t* data, std::size_t size);
 
+/// A sound file (Ogg Vorbis, WAV, or anything else), stoa::SoundClip::decode;
+/// a clip it reads is mono or stereo, within the rate and length limits.
+bool sound(const std::uint8_t* data, std::size_t size);
+
 /// The separator line of obj() inputs.
 inline const std::string mtlSeparator = "\n#@mtl\n";
 

@@ -7,6 +7,9 @@
 #   fuzz-md2        a Quake 2 MD2 model, stoa::decodeMd2
 #   fuzz-crowd_xml  a crowd world's XML, stoa::parseCrowdWorld (linked with Debian's pugixml)
 #   fuzz-editor_scene  an editor scene file's JSON, stoa::editorSceneFromJson (Debian's nlohmann-json)
+#   fuzz-sound      a sound file (Ogg Vorbis or WAV), stoa::SoundClip::decode; stb_vorbis is
+#                   Debian's libstb, not instrumented (Debian ships no stb_vorbis source),
+#                   and bounded instead: it decodes in a 4 MiB buffer of its own
 # Usage: tests/fuzz/build-fuzzers.sh [OUT_DIR]   (default: build-fuzz)
 # stb_image is Debian's copy (/usr/include/stb), compiled here with the same
 # sanitizers so that undefined behaviour inside it is reported too.
@@ -25,8 +28,10 @@ sources=(
   framework/src/image/Image.cpp framework/src/image/ImageFile.cpp framework/src/image/JpegCheck.cpp
   framework/src/image/HeightMap.cpp
   framework/src/geometry/Md2Model.cpp
-  framework/src/crowd/CrowdWorld.cpp framework/src/crowd/CrowdXml.cpp
+  framework/src/crowd/CrowdWorld.cpp framework/src/crowd/CrowdXml.cpp framework/src/crowd/XmlText.cpp
   framework/src/editor/EditorScene.cpp framework/src/editor/EditorSceneFile.cpp framework/src/editor/JsonDocument.cpp
+  framework/src/editor/SafeSave.cpp
+  framework/src/audio/SoundClip.cpp
   tests/fuzz/FuzzTargets.cpp
 )
 objects=()
@@ -48,9 +53,9 @@ if [[ ! -f "$stb" ]]; then
   $cc $flags -w -c "$root/tests/fuzz/stb_image_impl.c" -o "$stb"
 fi
 for pid in "${pids[@]}"; do wait "$pid"; done
-for target in obj image heightmap md2 crowd_xml editor_scene; do
+for target in obj image heightmap md2 crowd_xml editor_scene sound; do
   echo "link fuzz-$target"
   $cxx -std=c++17 -O1 -g $sanitize -fsanitize=fuzzer "$root/tests/fuzz/fuzz_$target.cpp" -I"$root/framework/include" \
-       "${objects[@]}" "$stb" -lpugixml -o "$out/fuzz-$target"
+       "${objects[@]}" "$stb" -lpugixml -lstb -o "$out/fuzz-$target"
 done
-echo "fuzzers in $out: fuzz-obj fuzz-image fuzz-heightmap fuzz-md2 fuzz-crowd_xml fuzz-editor_scene"
+echo "fuzzers in $out: fuzz-obj fuzz-image fuzz-heightmap fuzz-md2 fuzz-crowd_xml fuzz-editor_scene fuzz-sound"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes each loader for a given time, one after the other, one process each.
-#   tests/fuzz/fuzz.sh [MINUTES_PER_LOADER] [obj|image|heightmap|md2|crowd_xml|editor_scene ...]
-# Default: 10 minutes each for obj, image, heightmap, md2, crowd_xml and editor_scene. Builds the fuzzers
+#   tests/fuzz/fuzz.sh [MINUTES_PER_LOADER] [obj|image|heightmap|md2|crowd_xml|editor_scene|sound ...]
+# Default: 10 minutes each for obj, image, heightmap, md2, crowd_xml, editor_scene and sound. Builds the fuzzers
 # (build-fuzzers.sh) and the corpora (make-regression-corpus.py) in
 # $FUZZ_OUT (default build-fuzz), keeps each loader's growing corpus in
 # $FUZZ_OUT/work/LOADER and its log in $FUZZ_OUT/LOADER.log, and writes any
@@ -13,7 +13,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 minutes=${1:-10}
 shift || true
 targets=("$@")
-(( ${#targets[@]} )) || targets=(obj image heightmap md2 crowd_xml editor_scene)
+(( ${#targets[@]} )) || targets=(obj image heightmap md2 crowd_xml editor_scene sound)
 out=${FUZZ_OUT:-$root/build-fuzz}
 rss_mb=${FUZZ_RSS_MB:-2048}
 

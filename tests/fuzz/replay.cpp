@@ -4,8 +4,8 @@
 //
 //   stoa-fuzz-replay CORPUS_DIR [MORE_DIRS...]
 //
-// CORPUS_DIR is what make-regression-corpus.py writes: regression/{obj,image,md2,crowd_xml,editor_scene}
-// and seeds/{obj,image,md2,crowd_xml,editor_scene}; a further folder (tests/fuzz/findings) holds
+// CORPUS_DIR is what make-regression-corpus.py writes: regression/{obj,image,md2,crowd_xml,editor_scene,sound}
+// and seeds/{obj,image,md2,crowd_xml,editor_scene,sound}; a further folder (tests/fuzz/findings) holds
 // obj/, image/ and md2/ too; the folder picks the entry point. A file named
 // "ok-..." and every seed must load, a file named "err-..." must be refused
 // with an InputError (an image as an image and as a height map); any other
@@ -40,7 +40,7 @@ void expect(bool condition, const fs::path& path, const char* what) {
 }
 
 void replay(const fs::path& folder, bool seeds) {
-    for (const char* kind : {"obj", "image", "md2", "crowd_xml", "editor_scene"}) {
+    for (const char* kind : {"obj", "image", "md2", "crowd_xml", "editor_scene", "sound"}) {
         const fs::path dir = folder / kind;
         if (!fs::is_directory(dir)) continue;
         std::vector<fs::path> paths;
@@ -58,6 +58,10 @@ void replay(const fs::path& folder, bool seeds) {
             if (std::string(kind) == "obj" || std::string(kind) == "md2") {
                 const bool loaded = std::string(kind) == "obj" ? stoa::fuzz::obj(data, bytes.size())
                                                                : stoa::fuzz::md2(data, bytes.size());
+                if (mustLoad) expect(loaded, path, "must load, but was refused");
+                if (mustFail) expect(!loaded, path, "must be refused, but loaded");
+            } else if (std::string(kind) == "sound") {
+                const bool loaded = stoa::fuzz::sound(data, bytes.size());
                 if (mustLoad) expect(loaded, path, "must load, but was refused");
                 if (mustFail) expect(!loaded, path, "must be refused, but loaded");
             } else if (std::string(kind) == "crowd_xml" || std::string(kind) == "editor_scene") {
