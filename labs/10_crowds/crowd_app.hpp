@@ -47,6 +47,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -252,13 +253,27 @@ private:
         if (m_paused || !m_simulation || m_framesDrawn < 2) return;
         m_accumulated += seconds * m_speed;
         const float step = m_world.step;
-        int steps = 0;
-        while (m_accumulated >= step && steps < 240) {
+        // At most 50 ms of stepping a frame, so that the window keeps answering: a
+        // crowd that cannot keep up runs slower than real time (the backlog is dropped).
+        using Clock = std::chrono::steady_clock;
+        const Clock::time_point start = Clock::now();
+        while (m_accumulated >= step) {
+            const Clock::time_point before = Clock::now();
             m_simulation->step();
             m_accumulated -= step;
-            ++steps;
+            const double took = std::chrono::duration<double>(Clock::now() - before).count();
+            if (took > 0.1 && !m_warnedSlow) {
+                m_warnedSlow = true;
+                std::printf("the crowd steps slowly: one step of %zu agents took %.0f ms, so it runs slower than real "
+                            "time (a denser crowd or a longer sight costs more per agent; docs/crowds-xml.md)\n",
+                            m_simulation->agents().size(), took * 1000.0);
+                std::fflush(stdout);
+            }
+            if (Clock::now() - start > std::chrono::milliseconds(50)) {
+                m_accumulated = 0.0f;
+                break;
+            }
         }
-        if (steps == 240) m_accumulated = 0.0f;   // too slow to keep up: drop the backlog
     }
 
     static std::filesystem::path resolveWorld(const std::string& name, const CaseSpec& spec) {
@@ -444,6 +459,7 @@ private:
     bool m_paused = false;
     float m_speed = 1.0f;
     float m_accumulated = 0.0f;
+    bool m_warnedSlow = false;   // the slow-step line is printed once
     glm::vec2 m_pressAt{0.0f};
     glm::ivec2 m_lastSize{0};
     CrowdView m_lastView;
