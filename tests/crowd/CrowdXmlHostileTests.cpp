@@ -22,6 +22,21 @@ TEST_CASE("Issue 25: includes stay in the world's folder, once each, within a bu
         expectError({{"world.xml", world("  <include file=\"../outside.xml\"/>\n")}}, "world.xml", "../outside.xml",
                     "lies outside the world's folder");
     }
+    SECTION("an error in an included file says where it was included from") {
+        TempFolder folder("crowd-xml");
+        folder.write("world.xml", world("  <include file=\"a.xml\"/>\n"));
+        folder.write("a.xml", "<agents>\n  <include file=\"b.xml\"/>\n</agents>\n");
+        folder.write("b.xml", "<agents>\n\n  <type name=\"x\" model=\"m\" skin=\"s\" behaviour=\"walk\" speed=\"fast\"/>\n</agents>\n");
+        try {
+            (void)loadCrowdWorld(folder / "world.xml");
+            FAIL("the world loaded");
+        } catch (const InputError& error) {
+            CHECK(error.file() == (folder / "b.xml").string());
+            CHECK(error.line() == 3);
+            CHECK(contains(error.message(), "is not a number (included from " + (folder / "a.xml").string() + ":2, from " +
+                                                (folder / "world.xml").string() + ":7)"));
+        }
+    }
     SECTION("a file included twice") {
         expectError({{"world.xml", world("  <include file=\"agents.xml\"/>\n  <include file=\"./agents.xml\"/>\n")},
                      {agents, "<agents/>\n"}},

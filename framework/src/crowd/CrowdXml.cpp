@@ -356,6 +356,7 @@ private:
     void readWorld(const XmlFile& file, pugi::xml_node world);
     void readAgentsChild(const XmlFile& file, pugi::xml_node node, int depth);
     void readInclude(const XmlFile& file, pugi::xml_node node, int depth);
+    void readIncludedFile(std::string text, const fs::path& path, const fs::path& key, int depth);
     void readType(const XmlFile& file, pugi::xml_node node);
     void readBehaviour(const XmlFile& file, pugi::xml_node node);
     void readStateMachine(const XmlFile& file, pugi::xml_node node, Behaviour& behaviour);
@@ -542,6 +543,22 @@ void Loader::readInclude(const XmlFile& file, pugi::xml_node node, int depth) {
     if (m_bytes > CrowdXmlLimits::maxWorldBytes)
         file.fail(node, "<include> file=\"" + quoteInput(written) + "\" takes the world past " +
                             std::to_string(CrowdXmlLimits::maxWorldBytes >> 20) + " MiB of XML, all files together");
+    try {
+        readIncludedFile(std::move(text), path, key, depth);
+    } catch (const InputError& error) {
+        // Where the file was included from, after what is wrong in it: "(included from
+        // world.xml:5)", and for a file included by an included file ", from ...".
+        std::string message = error.message();
+        const std::string from = file.name() + ":" + std::to_string(file.line(node));
+        if (message.size() > 1 && message.back() == ')' && message.find(" (included from ") != std::string::npos)
+            message.insert(message.size() - 1, ", from " + from);
+        else
+            message += " (included from " + from + ")";
+        throw InputError(error.file(), error.line(), message);
+    }
+}
+
+void Loader::readIncludedFile(std::string text, const fs::path& path, const fs::path& key, int depth) {
     const XmlFile included(std::move(text), path);
     const pugi::xml_node root = included.document().document_element();
     if (std::string(root.name()) != "agents") {
