@@ -8,18 +8,11 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 namespace lab03 {
 
 namespace {
-
-std::string vectorText(const glm::vec3& v) {
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", v.x, v.y, v.z);
-    return text;
-}
 
 bool near(const glm::vec3& a, const glm::vec3& b) { return glm::length(a - b) < 1e-3f; }
 
@@ -43,8 +36,8 @@ stoa::Mesh degenerateMesh() {
 // The first problem with `normal`, or "" when it is the `expected` unit vector.
 std::string problemWith(const glm::vec3& normal, const glm::vec3& expected) {
     if (!std::isfinite(normal.x) || !std::isfinite(normal.y) || !std::isfinite(normal.z))
-        return "is not finite, " + vectorText(normal);
-    if (!near(normal, expected)) return "is " + vectorText(normal) + ", expected " + vectorText(expected);
+        return "is not finite, " + stoa::checkVector(normal, 2);
+    if (!near(normal, expected)) return "is " + stoa::checkVector(normal, 2) + ", expected " + stoa::checkVector(expected, 2);
     return "";
 }
 

@@ -9,26 +9,9 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <cstdio>
 #include <string>
 
 namespace lab06 {
-
-namespace {
-
-std::string vectorText(const glm::vec3& v) {
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.3f, %.3f, %.3f)", v.x, v.y, v.z);
-    return text;
-}
-
-std::string number(float value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3f", value);
-    return text;
-}
-
-} // namespace
 
 stoa::CheckResult checkSphereTurnedAboutX() {
     // A column 3 times as tall as it is wide, turned 40 degrees about X and moved.
@@ -42,8 +25,8 @@ stoa::CheckResult checkSphereTurnedAboutX() {
 
     const glm::vec3 centre(model * glm::vec4(local.center, 1.0f));
     if (glm::length(world.center - centre) > 1e-3f)
-        return stoa::CheckResult::fail(what + ": the centre is " + vectorText(world.center) + ", expected " +
-                                       vectorText(centre) + ", the object's centre carried by the whole model matrix "
+        return stoa::CheckResult::fail(what + ": the centre is " + stoa::checkVector(world.center) + ", expected " +
+                                       stoa::checkVector(centre) + ", the object's centre carried by the whole model matrix "
                                        "(docs: A sphere in world space)");
 
     // The points of the object's sphere along its axes and diagonals: each must land inside.
@@ -56,13 +39,13 @@ stoa::CheckResult checkSphereTurnedAboutX() {
                 const float distance = glm::length(landed - world.center);
                 if (distance > world.radius + 1e-3f)
                     return stoa::CheckResult::fail(
-                        what + ": its radius is " + number(world.radius) + ", but the point " + vectorText(onSphere) +
-                        " of the object's sphere lands " + number(distance) +
+                        what + ": its radius is " + stoa::checkNumber(world.radius, 3) + ", but the point " + stoa::checkVector(onSphere) +
+                        " of the object's sphere lands " + stoa::checkNumber(distance, 3) +
                         " from the centre, outside it. The radius grows by the longest column of the model's upper "
                         "3 x 3, how far one step along an object axis goes (docs: A sphere in world space)");
             }
     if (world.radius > 3.0f * 1.001f)
-        return stoa::CheckResult::fail(what + ": its radius is " + number(world.radius) +
+        return stoa::CheckResult::fail(what + ": its radius is " + stoa::checkNumber(world.radius, 3) +
                                        ", larger than needed: the longest column is 3 long, so 3 holds the object "
                                        "(docs: A sphere in world space)");
     return stoa::CheckResult::pass("a sphere stretched along Y and turned about X still holds every point of the "

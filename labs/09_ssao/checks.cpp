@@ -24,19 +24,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
 namespace lab09 {
 
 namespace {
-
-std::string vectorText(const glm::vec3& v) {
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.4f, %.4f, %.4f)", v.x, v.y, v.z);
-    return text;
-}
 
 // The direction of (2a - 1, 2b - 1, c): steps 1 and 2 of the docs for the numbers a, b, c.
 glm::vec3 directionOf(float a, float b, float c) {
@@ -59,12 +52,12 @@ stoa::CheckResult checkKernelInOrder() {
         const glm::vec3 sample = kernel[static_cast<std::size_t>(i)];
         const glm::vec3 expected = directionOf(u[0], u[1], u[2]);
         if (!(glm::length(sample) > 0.0f) || !std::isfinite(glm::length(sample)))
-            return stoa::CheckResult::fail("ssaoKernel(4, 1): sample " + std::to_string(i) + " is " + vectorText(sample) +
+            return stoa::CheckResult::fail("ssaoKernel(4, 1): sample " + std::to_string(i) + " is " + stoa::checkVector(sample, 4) +
                                            ", which has no direction (docs: The sample kernel)");
         const glm::vec3 direction = glm::normalize(sample);
         if (glm::length(direction - expected) <= 1e-4f) continue;
         const std::string found = "ssaoKernel(4, 1): sample " + std::to_string(i) + " points along " +
-                                  vectorText(direction) + ", expected " + vectorText(expected) +
+                                  stoa::checkVector(direction, 4) + ", expected " + stoa::checkVector(expected, 4) +
                                   ", the direction of (2u - 1, 2u - 1, u) for its first three numbers of seed 1";
         std::array<int, 3> order{0, 1, 2};
         while (std::next_permutation(order.begin(), order.end()))   // every order but x, y, z
@@ -93,12 +86,6 @@ stoa::DrawItem facingTheCamera(const stoa::GpuMesh& square, glm::vec3 centre) {
 float smoothstep01(float x) {
     const float t = std::min(std::max(x, 0.0f), 1.0f);
     return t * t * (3.0f - 2.0f * t);
-}
-
-std::string number(float value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2f", value);
-    return text;
 }
 
 } // namespace
@@ -131,15 +118,15 @@ stoa::CheckResult checkRangeCheckFromThePoint(stoa::DeferredRenderer& renderer, 
     const float sampleZ = wallZ + radius * sample.z;
     const float expected = 1.0f - smoothstep01(radius / std::abs(wallZ - stripZ));   // 0.5
     const float fromTheSample = 1.0f - smoothstep01(radius / std::abs(sampleZ - stripZ));
-    const std::string what = "a wall pixel beside the edge of a strip " + number(stripZ - wallZ) +
-                             " m in front of the wall, radius " + number(radius) +
-                             ", one sample that lands behind the strip: the raw occlusion is " + number(got) +
-                             ", expected " + number(expected) + " (the range check, smoothstep(0, 1, r / |P.z - sceneZ|) = " +
-                             number(1.0f - expected) + ")";
+    const std::string what = "a wall pixel beside the edge of a strip " + stoa::checkNumber(stripZ - wallZ) +
+                             " m in front of the wall, radius " + stoa::checkNumber(radius) +
+                             ", one sample that lands behind the strip: the raw occlusion is " + stoa::checkNumber(got) +
+                             ", expected " + stoa::checkNumber(expected) + " (the range check, smoothstep(0, 1, r / |P.z - sceneZ|) = " +
+                             stoa::checkNumber(1.0f - expected) + ")";
     if (std::abs(got - expected) <= 0.03f)
         return stoa::CheckResult::pass("the range check weighs an occluder by its distance from P: 0.5 at 2 radii");
     if (std::abs(got - fromTheSample) <= 0.03f)
-        return stoa::CheckResult::fail(what + "; " + number(got) + " is what |S.z - sceneZ|, the sample's distance, gives: "
+        return stoa::CheckResult::fail(what + "; " + stoa::checkNumber(got) + " is what |S.z - sceneZ|, the sample's distance, gives: "
                                               "the range check measures from P (docs: The range check)");
     return stoa::CheckResult::fail(what + " (docs: The occlusion estimate, The range check)");
 }

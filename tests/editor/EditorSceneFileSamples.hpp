@@ -5,11 +5,20 @@
 // and whose left-out keys take the defaults, and a plain substring test for the
 // messages.
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace stoa::test::scene_file {
 
 inline bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+/// The whole of a file, or "" when it cannot be read.
+inline std::string readText(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
 
 // A valid scene every refusal in EditorSceneFileTests.cpp changes in one place.
 inline const std::string kScene = R"({

@@ -35,11 +35,8 @@ namespace {
 
 using stoa::test::scene_file::contains;
 using stoa::test::scene_file::kScene;
+using stoa::test::scene_file::readText;
 
-std::string readText(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 /// The names in `folder`, sorted.
 std::vector<std::string> namesIn(const fs::path& folder) {

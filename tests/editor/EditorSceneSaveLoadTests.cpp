@@ -33,11 +33,8 @@ namespace {
 
 using stoa::test::scene_file::contains;
 using stoa::test::scene_file::kScene;
+using stoa::test::scene_file::readText;
 
-std::string readText(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 /// A scene with no field at its default, for the round trip.
 EditorScene fullScene() {

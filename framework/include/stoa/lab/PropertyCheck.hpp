@@ -16,6 +16,9 @@
 // grader runs it as `--render NAME` and reads the exit status: 0 it holds,
 // kExitCheckFailed (4) it does not, 3 a stub is still in place.
 
+#include <glm/vec3.hpp>
+
+#include <cstdio>
 #include <string>
 
 namespace stoa {
@@ -29,5 +32,17 @@ struct CheckResult {
     static CheckResult pass(std::string message) { return {true, std::move(message)}; }
     static CheckResult fail(std::string message) { return {false, std::move(message)}; }
 };
+
+/// A number for a check's message, with `decimals` digits after the point: "2.39".
+inline std::string checkNumber(double value, int decimals = 2) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+/// A vector for a check's message: "(0.000, 1.000, 0.000)".
+inline std::string checkVector(const glm::vec3& v, int decimals = 3) {
+    return "(" + checkNumber(v.x, decimals) + ", " + checkNumber(v.y, decimals) + ", " + checkNumber(v.z, decimals) + ")";
+}
 
 } // namespace stoa
