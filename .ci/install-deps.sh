@@ -28,7 +28,7 @@ for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
 done
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps: all ${#packages[@]} packages are installed"
+  echo "install-deps: all ${#packages[@]} packages are installed" >&2   # a status line: stdout is the report
   exit 0
 fi
 
@@ -40,13 +40,13 @@ if [ "$(id -u)" -ne 0 ]; then
   fi
 fi
 
-echo "install-deps: installing ${missing[*]}"
+echo "install-deps: installing ${missing[*]}" >&2
 export DEBIAN_FRONTEND=noninteractive
 "${run_as_root[@]}" apt-get update -q
 # Mesa >= 25.1 has no OSMesa: install the rest and let EGL do the headless work.
 if ! "${run_as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"; then
   without_osmesa=()
   for package in "${missing[@]}"; do [ "$package" = libosmesa6-dev ] || without_osmesa+=("$package"); done
-  echo "install-deps: retrying without libosmesa6-dev (headless rendering will use EGL)"
+  echo "install-deps: retrying without libosmesa6-dev (headless rendering will use EGL)" >&2
   "${run_as_root[@]}" apt-get install -y -q --no-install-recommends "${without_osmesa[@]}"
 fi
