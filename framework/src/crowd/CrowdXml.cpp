@@ -212,9 +212,9 @@ std::optional<double> parseNumber(std::string_view text) {
     return value;
 }
 
-/// The problem with the number attribute's text, as a message, or "" when it is a number.
-std::string numberProblem(pugi::xml_attribute attribute, const std::string& where) {
-    double value = 0.0;
+/// The problem with the number attribute's text, as a message, or "" when it is a
+/// number (then in `value`).
+std::string numberProblem(pugi::xml_attribute attribute, const std::string& where, double& value) {
     switch (parseNumber(attribute.value(), value)) {
     case NumberText::Number: return "";
     case NumberText::NotANumber: return "the attribute " + attributeText(attribute) + " on " + where + " is not a number";
@@ -227,7 +227,7 @@ std::string numberProblem(pugi::xml_attribute attribute, const std::string& wher
     return "";
 }
 
-enum class Range { Finite, NonNegative, Positive, UnitInterval, Step, Metres };
+enum class Range { NonNegative, Positive, UnitInterval, Step, Metres };
 
 /// How far from the origin a place or a height may be: 100 km, so that every
 /// difference of two of them is a float with room for centimetres to spare.
@@ -235,7 +235,6 @@ constexpr double kMaxMetres = 100000.0;
 
 bool inRange(double value, Range range) {
     switch (range) {
-    case Range::Finite: return true;
     case Range::NonNegative: return value >= 0.0;
     case Range::Positive: return value > 0.0 && value <= kMaxMetres;
     case Range::UnitInterval: return value >= 0.0 && value <= 1.0;
@@ -247,7 +246,6 @@ bool inRange(double value, Range range) {
 
 const char* describe(Range range) {
     switch (range) {
-    case Range::Finite: return "a finite number";
     case Range::NonNegative: return "0 or more";
     case Range::Positive: return "greater than 0 and at most 100000";
     case Range::UnitInterval: return "between 0 and 1";
@@ -263,8 +261,9 @@ float number(const XmlFile& file, pugi::xml_node node, const char* name, std::op
         if (fallback) return *fallback;
         file.fail(node, "missing attribute '" + std::string(name) + "' on " + tag(node));
     }
-    if (const std::string problem = numberProblem(attribute, tag(node)); !problem.empty()) file.fail(node, problem);
-    const float kept = static_cast<float>(*parseNumber(attribute.value()));
+    double value = 0.0;
+    if (const std::string problem = numberProblem(attribute, tag(node), value); !problem.empty()) file.fail(node, problem);
+    const float kept = static_cast<float>(value);
     if (!inRange(kept, range)) {
         file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is out of range: it must be " +
                             describe(range));
@@ -378,7 +377,6 @@ private:
     NameIndex m_types;                         // m_world.types by name
     NameIndex m_behaviours;                    // m_world.behaviours by name
     std::vector<OpenFile> m_included;          // every file included so far, named by where it was
-    int m_includes = 0;                        // <include> elements read, all files together
     std::size_t m_bytes = 0;                   // XML read, all files together
 };
 
@@ -530,7 +528,7 @@ void Loader::readInclude(const XmlFile& file, pugi::xml_node node, int depth) {
         if (earlier.identity == key)
             file.fail(node, "<include> file=\"" + quoteInput(written) + "\" is included already, at " + earlier.name +
                                 "; include each file once");
-    if (++m_includes > CrowdXmlLimits::maxIncludes)
+    if (m_included.size() >= static_cast<std::size_t>(CrowdXmlLimits::maxIncludes))
         file.fail(node, "more than " + std::to_string(CrowdXmlLimits::maxIncludes) + " <include> elements in one world");
     m_included.push_back({key, file.name() + ":" + std::to_string(file.line(node))});
     std::string text;
