@@ -196,4 +196,16 @@ TEST_CASE("LiveShader: saveToFile() replaces the file in one step") {
         }
         CHECK_FALSE(fs::exists(shaders.fragment.parent_path()));
     }
+    SECTION("a read-only shader file is refused and left as it was (the scene files' safe save)") {
+        fs::permissions(shaders.fragment, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+        REQUIRE(live.setFragmentText(fragment("vec3(1.0, 0.0, 0.0)")));
+        try {
+            live.saveToFile();
+            FAIL("expected an InputError");
+        } catch (const InputError& error) {
+            CHECK(error.file() == shaders.fragment.string());
+            CHECK(error.message().find("read-only") != std::string::npos);
+        }
+        CHECK(readAll(shaders.fragment) == green);
+    }
 }

@@ -28,7 +28,7 @@ sources=(
   framework/src/image/Image.cpp framework/src/image/ImageFile.cpp framework/src/image/JpegCheck.cpp
   framework/src/image/HeightMap.cpp
   framework/src/geometry/Md2Model.cpp
-  framework/src/crowd/CrowdWorld.cpp framework/src/crowd/CrowdXml.cpp framework/src/crowd/XmlText.cpp
+  framework/src/crowd/CrowdWorld.cpp framework/src/crowd/CrowdXml.cpp framework/src/crowd/XmlAttributes.cpp framework/src/crowd/XmlFile.cpp framework/src/crowd/XmlText.cpp
   framework/src/editor/EditorScene.cpp framework/src/editor/EditorSceneFile.cpp framework/src/editor/JsonDocument.cpp
   framework/src/editor/SafeSave.cpp
   framework/src/audio/SoundClip.cpp

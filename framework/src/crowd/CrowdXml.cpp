@@ -1,6 +1,7 @@
 #include <stoa/crowd/CrowdXml.hpp>
 
-#include "XmlText.hpp"
+#include "XmlAttributes.hpp"
+#include "XmlFile.hpp"
 
 #include <stoa/core/InputError.hpp>
 #include <stoa/core/InputFile.hpp>
@@ -8,14 +9,9 @@
 #include <pugixml.hpp>
 
 #include <algorithm>
-#include <charconv>
-#include <cmath>
 #include <cstdint>
-#include <initializer_list>
 #include <limits>
 #include <optional>
-#include <string_view>
-#include <system_error>
 #include <unordered_map>
 
 // The loader reads every file of a world in one pass, element by element, and
@@ -27,9 +23,9 @@
 // has been read. Names are found through hash maps, so that a hostile file of
 // 4 MB (a behaviour of 200,000 states) reads in linear time, and a list of
 // names in a message stops after a dozen. docs/crowds-xml.md describes the format.
-// The file is longer than most in the framework because it is the format's
-// one list of what is accepted: each element's reader is a few lines, and
-// splitting them across files would scatter that list.
+// This file is the format's one list of what is accepted, element by element;
+// how an attribute is read and checked (XmlAttributes.hpp) and how a file's
+// lines are counted (XmlFile.hpp) are the same for every element and live apart.
 
 namespace stoa {
 
@@ -37,63 +33,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// One parsed XML file, kept with its text so that an element's byte offset
-/// (pugixml's offset_debug()) becomes a 1-based line.
-class XmlFile {
-public:
-    /// Parses `text`; `name` is the file named in errors and its folder the
-    /// one relative paths in the file are resolved against.
-    XmlFile(std::string text, fs::path name) : m_name(name.string()), m_folder(name.parent_path()), m_text(std::move(text)) {
-        checkXmlText(m_text, m_name);
-        m_lineStarts.push_back(0);
-        for (std::size_t i = 0; i < m_text.size(); ++i) {
-            const bool lineFeed = m_text[i] == '\n';
-            const bool loneReturn = m_text[i] == '\r' && (i + 1 == m_text.size() || m_text[i + 1] != '\n');
-            if (lineFeed || loneReturn) m_lineStarts.push_back(i + 1);
-        }
-        // encoding_utf8: pugixml converts nothing, so its offsets are offsets into m_text.
-        // parse_default expands only XML's five built-in entities and character references;
-        // it reads no DOCTYPE, so it never expands an entity the file defines or fetches one.
-        const pugi::xml_parse_result result =
-            m_document.load_buffer(m_text.data(), m_text.size(), pugi::parse_default, pugi::encoding_utf8);
-        if (!result) {
-            throw InputError(m_name, lineOfOffset(result.offset), std::string("malformed XML: ") + result.description());
-        }
-    }
-
-    const std::string& name() const { return m_name; }
-    const fs::path& folder() const { return m_folder; }
-    const pugi::xml_document& document() const { return m_document; }
-
-    /// The line of an element's name, or of the first character of text that is not white space.
-    int line(pugi::xml_node node) const {
-        int line = lineOfOffset(node.offset_debug());
-        if (node.type() == pugi::node_pcdata && line > 0) {
-            // Line ends in a value are single '\n's (parse_eol), so counting them counts lines.
-            for (const char* c = node.value(); *c == ' ' || *c == '\t' || *c == '\n' || *c == '\r'; ++c) line += *c == '\n';
-        }
-        return line;
-    }
-
-    [[noreturn]] void fail(pugi::xml_node node, const std::string& message) const {
-        throw InputError(m_name, line(node), message);
-    }
-
-private:
-    int lineOfOffset(std::ptrdiff_t offset) const {
-        if (offset < 0) return 0;
-        const auto after = std::upper_bound(m_lineStarts.begin(), m_lineStarts.end(), static_cast<std::size_t>(offset));
-        return static_cast<int>(after - m_lineStarts.begin());
-    }
-
-    std::string m_name;
-    fs::path m_folder;
-    std::string m_text;
-    std::vector<std::size_t> m_lineStarts;  // byte offset of each line's first byte
-    pugi::xml_document m_document;
-};
-
-std::string tag(pugi::xml_node node) { return "<" + quoteInput(node.name()) + ">"; }
+using namespace xml;
 
 /// "a, b, c" for a message: at most a dozen names, then how many more.
 std::string joined(const std::vector<std::string>& names) {
@@ -124,204 +64,6 @@ private:
     std::unordered_map<std::string, int> m_indices;
     std::vector<std::string> m_names;
 };
-
-/// Throws unless every attribute of `node` is one of `allowed`, each once.
-void checkAttributes(const XmlFile& file, pugi::xml_node node, std::initializer_list<const char*> allowed) {
-    for (pugi::xml_attribute attribute = node.first_attribute(); attribute; attribute = attribute.next_attribute()) {
-        const std::string name = attribute.name();
-        const bool known = std::any_of(allowed.begin(), allowed.end(), [&](const char* a) { return name == a; });
-        if (!known) {
-            std::string expected;
-            for (const char* a : allowed) expected += (expected.empty() ? "" : ", ") + std::string(a);
-            file.fail(node, "unknown attribute '" + quoteInput(name) + "' on " + tag(node) +
-                                (expected.empty() ? "; it takes no attributes" : "; expected one of: " + expected));
-        }
-        for (pugi::xml_attribute later = attribute.next_attribute(); later; later = later.next_attribute()) {
-            if (name == later.name()) file.fail(node, "the attribute '" + quoteInput(name) + "' appears twice on " + tag(node));
-        }
-    }
-}
-
-/// The element children of `node`; text other than white space is an error.
-std::vector<pugi::xml_node> childElements(const XmlFile& file, pugi::xml_node node) {
-    std::vector<pugi::xml_node> children;
-    for (pugi::xml_node child : node.children()) {
-        if (child.type() == pugi::node_element) {
-            children.push_back(child);
-        } else if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) {
-            const std::string text = child.value();
-            const std::size_t start = std::min(text.find_first_not_of(" \t\r\n"), text.size());
-            const std::size_t end = text.find_last_not_of(" \t\r\n") + 1;
-            file.fail(child, "unexpected text '" + quoteInput(text.substr(start, end > start ? end - start : 0)) + "' in " + tag(node) +
-                                 "; the format keeps everything in attributes");
-        }
-    }
-    return children;
-}
-
-/// An element that may hold nothing, with the attributes it may carry.
-void checkLeaf(const XmlFile& file, pugi::xml_node node, std::initializer_list<const char*> allowed) {
-    checkAttributes(file, node, allowed);
-    const std::vector<pugi::xml_node> children = childElements(file, node);
-    if (!children.empty()) file.fail(children[0], tag(node) + " holds no elements; found " + tag(children[0]));
-}
-
-std::string attributeText(pugi::xml_attribute attribute) {
-    return std::string(attribute.name()) + "=\"" + quoteInput(attribute.value()) + "\"";
-}
-
-/// The attribute's text; a missing or empty attribute is an error.
-std::string requiredText(const XmlFile& file, pugi::xml_node node, const char* name) {
-    const pugi::xml_attribute attribute = node.attribute(name);
-    if (!attribute) file.fail(node, "missing attribute '" + std::string(name) + "' on " + tag(node));
-    if (*attribute.value() == '\0') file.fail(node, "the attribute '" + std::string(name) + "' on " + tag(node) + " is empty");
-    return attribute.value();
-}
-
-std::string optionalText(const XmlFile& file, pugi::xml_node node, const char* name, const std::string& fallback) {
-    return node.attribute(name) ? requiredText(file, node, name) : fallback;
-}
-
-/// What the text of a number attribute holds.
-enum class NumberText { Number, NotANumber, TooLarge, TooSmall };
-
-/// Reads the whole of `text` as a number a float can hold: not "", "1.5m", "nan" or "inf"
-/// (NotANumber), not past a float's range ("1e39": TooLarge), and not so close to 0 that a
-/// float loses it or its precision ("1e-60", "1e-45": TooSmall); 0 itself is a number.
-/// std::from_chars ignores the locale, unlike strtod.
-NumberText parseNumber(std::string_view text, double& value) {
-    if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-    value = 0.0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || end != text.data() + text.size()) return NumberText::NotANumber;
-    if (error == std::errc::result_out_of_range) {
-        // from_chars leaves `value` alone then: the digits tell which way it overflowed.
-        const std::size_t exponent = text.find_first_of("eE");
-        const bool negativeExponent = exponent != std::string_view::npos && exponent + 1 < text.size() && text[exponent + 1] == '-';
-        return negativeExponent ? NumberText::TooSmall : NumberText::TooLarge;
-    }
-    if (error != std::errc() || !std::isfinite(value)) return NumberText::NotANumber;
-    if (std::abs(value) > std::numeric_limits<float>::max()) return NumberText::TooLarge;
-    if (value != 0.0 && std::abs(value) < std::numeric_limits<float>::min()) return NumberText::TooSmall;
-    return NumberText::Number;
-}
-
-std::optional<double> parseNumber(std::string_view text) {
-    double value = 0.0;
-    if (parseNumber(text, value) != NumberText::Number) return std::nullopt;
-    return value;
-}
-
-/// The problem with the number attribute's text, as a message, or "" when it is a
-/// number (then in `value`).
-std::string numberProblem(pugi::xml_attribute attribute, const std::string& where, double& value) {
-    switch (parseNumber(attribute.value(), value)) {
-    case NumberText::Number: return "";
-    case NumberText::NotANumber: return "the attribute " + attributeText(attribute) + " on " + where + " is not a number";
-    case NumberText::TooLarge:
-        return "the attribute " + attributeText(attribute) + " on " + where + " is too large for a float (at most 3.4e38)";
-    case NumberText::TooSmall:
-        return "the attribute " + attributeText(attribute) + " on " + where +
-               " is too close to 0 for a float (the smallest it keeps exactly is 1.2e-38); write 0 or a larger number";
-    }
-    return "";
-}
-
-enum class Range { NonNegative, Positive, UnitInterval, Step, Metres };
-
-/// How far from the origin a place or a height may be: 100 km, so that every
-/// difference of two of them is a float with room for centimetres to spare.
-constexpr double kMaxMetres = 100000.0;
-
-bool inRange(double value, Range range) {
-    switch (range) {
-    case Range::NonNegative: return value >= 0.0;
-    case Range::Positive: return value > 0.0 && value <= kMaxMetres;
-    case Range::UnitInterval: return value >= 0.0 && value <= 1.0;
-    case Range::Step: return value >= 0.001 && value <= 1.0;
-    case Range::Metres: return std::abs(value) <= kMaxMetres;
-    }
-    return false;
-}
-
-const char* describe(Range range) {
-    switch (range) {
-    case Range::NonNegative: return "0 or more";
-    case Range::Positive: return "greater than 0 and at most 100000";
-    case Range::UnitInterval: return "between 0 and 1";
-    case Range::Step: return "from 0.001 to 1 (seconds)";
-    case Range::Metres: return "from -100000 to 100000 (metres)";
-    }
-    return "";
-}
-
-float number(const XmlFile& file, pugi::xml_node node, const char* name, std::optional<float> fallback, Range range) {
-    const pugi::xml_attribute attribute = node.attribute(name);
-    if (!attribute) {
-        if (fallback) return *fallback;
-        file.fail(node, "missing attribute '" + std::string(name) + "' on " + tag(node));
-    }
-    double value = 0.0;
-    if (const std::string problem = numberProblem(attribute, tag(node), value); !problem.empty()) file.fail(node, problem);
-    const float kept = static_cast<float>(value);
-    if (!inRange(kept, range)) {
-        file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is out of range: it must be " +
-                            describe(range));
-    }
-    return kept;
-}
-
-/// A whole number in [least, most].
-std::int64_t wholeNumber(const XmlFile& file, pugi::xml_node node, const char* name, std::optional<std::int64_t> fallback,
-                         std::int64_t least, std::int64_t most) {
-    const pugi::xml_attribute attribute = node.attribute(name);
-    if (!attribute) {
-        if (fallback) return *fallback;
-        file.fail(node, "missing attribute '" + std::string(name) + "' on " + tag(node));
-    }
-    std::string_view text = attribute.value();
-    if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-    std::int64_t value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    const bool whole = !text.empty() && end == text.data() + text.size();
-    if (error == std::errc() && !whole && parseNumber(attribute.value())) {
-        file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is not a whole number");
-    }
-    if (error == std::errc::invalid_argument || !whole) {
-        file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is not a number");
-    }
-    if (error == std::errc::result_out_of_range || value < least || value > most) {
-        file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is out of range: it must be " +
-                            std::to_string(least) + " to " + std::to_string(most));
-    }
-    return value;
-}
-
-/// "x z": two finite numbers separated by white space.
-glm::vec2 coordinates(const XmlFile& file, pugi::xml_node node, const char* name, glm::vec2 fallback) {
-    const pugi::xml_attribute attribute = node.attribute(name);
-    if (!attribute) return fallback;
-    std::vector<std::string_view> words;
-    const std::string_view text = attribute.value();
-    for (std::size_t at = 0; at < text.size();) {
-        const std::size_t start = text.find_first_not_of(" \t\r\n", at);
-        if (start == std::string_view::npos) break;
-        const std::size_t end = std::min(text.find_first_of(" \t\r\n", start), text.size());
-        words.push_back(text.substr(start, end - start));
-        at = end;
-    }
-    std::optional<double> x, z;
-    if (words.size() == 2) x = parseNumber(words[0]), z = parseNumber(words[1]);
-    if (!x || !z) {
-        file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) +
-                            " is not a pair of numbers \"x z\" (metres)");
-    }
-    if (!inRange(*x, Range::Metres) || !inRange(*z, Range::Metres)) {
-        file.fail(node, "the attribute " + attributeText(attribute) + " on " + tag(node) + " is out of range: x and z must be " +
-                            describe(Range::Metres));
-    }
-    return {static_cast<float>(*x), static_cast<float>(*z)};
-}
 
 /// A path as written, after the folder of the file that names it (an absolute path stays as it is).
 fs::path resolved(const XmlFile& file, const std::string& path) { return file.folder() / path; }

@@ -3,6 +3,8 @@
 #include <stoa/core/InputError.hpp>
 #include <stoa/gl/ShaderSource.hpp>
 
+#include "SafeSave.hpp"
+
 #include <fstream>
 #include <sstream>
 #include <system_error>
@@ -56,20 +58,7 @@ bool LiveShader::setFragmentText(std::string text) {
 }
 
 void LiveShader::saveToFile() const {
-    fs::path temporary = m_fragmentFile;
-    temporary += ".saving";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << m_text;
-        out.close();
-        if (!out) throw InputError(m_fragmentFile.string(), 0, "cannot write the shader (through " + temporary.string() + ")");
-    }
-    std::error_code error;
-    fs::rename(temporary, m_fragmentFile, error);
-    if (error) {
-        fs::remove(temporary, error);
-        throw InputError(m_fragmentFile.string(), 0, "cannot replace the shader file: " + error.message());
-    }
+    saveFileSafely(m_fragmentFile, m_text, "the shader");
 }
 
 } // namespace stoa

@@ -46,9 +46,10 @@ public:
 
     /// The fragment file the text came from (absolute).
     const std::filesystem::path& fragmentFile() const { return m_fragmentFile; }
-    /// Writes fragmentText() to fragmentFile() (a temporary file renamed over
-    /// it, so a crash mid-write loses nothing). Throws InputError naming the
-    /// file when it cannot write.
+    /// Writes fragmentText() to fragmentFile() the way the editor saves a scene
+    /// (saveFileSafely in SafeSave.hpp: a temporary file renamed over it, so a
+    /// crash mid-write loses nothing; a read-only file, a folder or a device is
+    /// refused). Throws InputError naming the file when it cannot or must not write.
     void saveToFile() const;
 
 private:
