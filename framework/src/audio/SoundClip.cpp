@@ -4,9 +4,15 @@
 #include <stoa/core/InputError.hpp>
 #include <stoa/core/InputFile.hpp>
 
-// libstb (Debian's libstb-dev) holds stb_vorbis's code: the header only declares it.
+// The code of stb_vorbis is in a library (Debian's libstb) or in
+// StbImplementation.cpp (where stb is headers only: vcpkg, Homebrew); here the
+// file only declares it. Debian names it stb_vorbis.h, stb itself stb_vorbis.c.
 #define STB_VORBIS_HEADER_ONLY
+#if __has_include(<stb_vorbis.h>)
 #include <stb_vorbis.h>
+#else
+#include <stb_vorbis.c>
+#endif
 
 #include <array>
 #include <cmath>
