@@ -2,12 +2,14 @@
 
 #include "BatchGradeJson.hpp"
 #include "ChildProcess.hpp"
+#include "ClassReport.hpp"
 #include "GradeOptions.hpp"
 #include "Grader.hpp"
 #include "JsonWriter.hpp"
 #include "LabCatalog.hpp"
 #include "LabSandbox.hpp"
 #include "RenderTimes.hpp"
+#include "Similarity.hpp"
 #include "Report.hpp"
 #include "ReportFile.hpp"
 #include "StrayProcesses.hpp"
@@ -370,6 +372,43 @@ StudentGrade gradeSubmission(const StagedSubmission& staged, const Framework& fr
     }
 }
 
+namespace {
+
+// The class report (ClassReport.hpp) beside the gradebook; a failure to write it
+// is said and leaves the gradebook standing.
+void writeClassPages(const ClassOptions& options, const Framework& framework, const std::vector<StudentGrade>& grades,
+                     std::ostream& out, std::ostream& err) {
+    auto start = std::chrono::steady_clock::now();
+    try {
+        writeClassReport(options.outDir, summarizeGrades(grades, framework, options.outDir));
+        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        out << "wrote " << (options.outDir / "class.html").string() << " and class.json (" << formatPoints(seconds)
+            << " s)" << std::endl;
+    } catch (const std::exception& error) {
+        err << "stoa-grade-class: no class report: " << error.what() << "\n";
+    }
+}
+
+// --similarity: the staged copies of the submissions compared lab by lab.
+void compareStaged(const std::vector<StagedSubmission>& staged, const ClassOptions& options,
+                   const Framework& framework, std::ostream& out, std::ostream& err) {
+    std::map<std::string, std::filesystem::path> submissions;
+    for (const StagedSubmission& submission : staged)
+        if (!submission.labsDir.empty()) submissions[submission.submission.student] = submission.labsDir;
+    out << "comparing " << submissions.size() << " submissions for similarity..." << std::endl;
+    auto start = std::chrono::steady_clock::now();
+    try {
+        writeSimilarityReport(submissions, framework.sourceDir, framework.labs, options.outDir, SimilarityOptions{},
+                              out, err);
+        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        out << "similarity took " << formatPoints(seconds) << " s" << std::endl;
+    } catch (const std::exception& error) {
+        err << "stoa-grade-class: no similarity report: " << error.what() << "\n";
+    }
+}
+
+} // namespace
+
 int runClassGrade(const ClassOptions& options, const Framework& framework, std::ostream& out, std::ostream& err) {
     auto start = std::chrono::steady_clock::now();
     std::vector<std::string> skipped;
@@ -381,7 +420,7 @@ int runClassGrade(const ClassOptions& options, const Framework& framework, std::
         return 1;
     }
     std::filesystem::create_directories(options.outDir);
-    out << "grading " << submissions.size() << " submissions (" << options.jobs << " at once), labs:";
+    out << (options.similarityOnly ? "staging " : "grading ") << submissions.size() << " submissions (" << options.jobs << " at once), labs:";
     for (const std::string& lab : framework.labs) out << " " << lab;
     out << "\n" << (framework.gradeWritesHtml ? "" : "note: this stoa-grade has no --html; results.json only\n");
 
@@ -393,6 +432,10 @@ int runClassGrade(const ClassOptions& options, const Framework& framework, std::
     std::vector<StagedSubmission> staged(total);
     forEachInParallel(total, options.jobs, [&](std::size_t i) { staged[i] = stageForGrading(submissions[i], options); });
     if (std::string note = fileConfinementNote(); !note.empty()) err << "stoa-grade-class: " << note << "\n";
+    if (options.similarityOnly) {
+        compareStaged(staged, options, framework, out, err);
+        return 0;
+    }
 
     std::size_t finished = 0;
     std::vector<StudentGrade> grades(total);
@@ -428,6 +471,8 @@ int runClassGrade(const ClassOptions& options, const Framework& framework, std::
     }
     std::filesystem::path gradebook = options.outDir / "gradebook.csv";
     writeReportFile(gradebook, gradebookCsv(framework.labs, grades), "the gradebook");
+    writeClassPages(options, framework, grades, out, err);
+    if (options.similarity) compareStaged(staged, options, framework, out, err);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     out << "wrote " << gradebook.string() << " (" << total << " students, " << static_cast<int>(seconds + 0.5)
         << " s); per student: " << (options.outDir / "STUDENT").string()

@@ -16,7 +16,9 @@
 //                (and report.html where stoa-grade has --html) in <out>/<student>/.
 // Then every submission's files are hashed again (a change is noted: it must never
 // happen), and <out>/gradebook.csv gets one row per student with points per lab,
-// total, max, status and notes.
+// total, max, status and notes; <out>/class.html and class.json sum up the class
+// (ClassReport.hpp), and with --similarity <out>/similarity.html ranks the pairs
+// of submissions that look alike (Similarity.hpp).
 
 #include "BatchGradeSubmissions.hpp"
 #include "FileSandbox.hpp"
@@ -37,6 +39,8 @@ struct ClassOptions {
     std::vector<std::string> labs;         // --lab; empty = every lab
     double timeoutSeconds = 0.0;           // per case, passed to stoa-grade; 0: stoa-grade's own (RenderTimes.hpp)
     std::filesystem::path frameworkBuild;  // empty = the build folder stoa-grade-class runs from
+    bool similarity = false;               // --similarity: also compare the submissions (Similarity.hpp)
+    bool similarityOnly = false;           // --similarity-only: stage and compare, build and grade nothing
 };
 
 /// The prebuilt framework the submissions compile against.

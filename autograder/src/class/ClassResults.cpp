@@ -9,42 +9,15 @@
 #include "JsonWriter.hpp"
 #include "Report.hpp"
 #include "ReportFile.hpp"
+#include "ResultsTests.hpp"
 
 #include <stoa/core/InputError.hpp>
 
-#include <cctype>
 #include <sstream>
 
 namespace stoa::grader {
 
 namespace {
-
-std::string labOfTest(const JsonValue& test) {
-    if (const JsonValue* tags = test.find("tags"))
-        for (const JsonValue& tag : tags->items())
-            if (tag.asString().size() > 3 && std::isdigit(static_cast<unsigned char>(tag.asString()[0])))
-                return tag.asString();
-    const JsonValue* name = test.find("name");
-    std::string text = name ? name->asString() : "";
-    return text.substr(0, text.find('/'));
-}
-
-bool hasTag(const JsonValue& test, const std::string& wanted) {
-    if (const JsonValue* tags = test.find("tags"))
-        for (const JsonValue& tag : tags->items())
-            if (tag.asString() == wanted) return true;
-    return false;
-}
-
-// stoa-grade tags each test with its lab and its status ("not attempted", "error", ...);
-// Gradescope's own "status" knows only passed and failed.
-std::string testStatus(const JsonValue& test) {
-    if (const JsonValue* tags = test.find("tags"))
-        for (const JsonValue& tag : tags->items())
-            if (statusFromName(tag.asString())) return tag.asString();
-    const JsonValue* status = test.find("status");
-    return status ? status->asString() : "unknown";
-}
 
 std::string describeCounts(const std::map<std::string, int>& counts, int total) {
     const std::string passed = statusName(GradeStatus::Passed);

@@ -1,10 +1,12 @@
 // stoa-grade-class: grades a folder of submissions into a gradebook (see ClassGrader.hpp).
 //
 //   stoa-grade-class SUBMISSIONS_DIR --out DIR [--jobs N] [--lab NN]... [--timeout SECONDS]
-//                    [--framework-build DIR]
+//                    [--framework-build DIR] [--similarity | --similarity-only]
+//   stoa-grade-class --report-from FOLDER [--out DIR]
 
 #include "ChildProcess.hpp"
 #include "ClassGrader.hpp"
+#include "ClassReport.hpp"
 #include "CommandLine.hpp"
 #include "LabCatalog.hpp"
 
@@ -20,7 +22,8 @@ const char* const kUsage = R"(stoa-grade-class: grades a folder of submissions i
 
 usage:
   stoa-grade-class SUBMISSIONS_DIR --out DIR [--jobs N] [--lab NN]... [--timeout SECONDS]
-                   [--framework-build DIR]
+                   [--framework-build DIR] [--similarity | --similarity-only]
+  stoa-grade-class --report-from FOLDER [--out DIR]
 
 SUBMISSIONS_DIR holds one entry per student: a folder, a .zip or a .tar.gz of the
 student's labs/ tree (labs/ at the top, or inside one top folder). The student's
@@ -34,10 +37,17 @@ options:
   --timeout SECONDS       wall-clock limit per case (default: stoa-grade's, from the
                           solution's recorded render time of each case)
   --framework-build DIR   the framework's build folder (default: the one this program is in)
+  --similarity            also rank the pairs of submissions that look alike, lab by lab
+                          (Debian's similarity-tester: sim_c, sim_text), into DIR/similarity.html
+  --similarity-only       stage the submissions and compare them; build and grade nothing
+  --report-from FOLDER    no grading: the class report from a folder of results.json files
+                          (FOLDER/STUDENT/results.json or FOLDER/STUDENT.json, e.g. a Gradescope
+                          export or an earlier --out folder), into --out (default: FOLDER)
 
-output: DIR/gradebook.csv (student, points per lab, total, max, status, notes) and
-DIR/STUDENT/ with results.json, report.html (where stoa-grade writes HTML) and the
-configure, build and grade logs. Exit status 0 when the batch ran, 1 when it could
+output: DIR/gradebook.csv (student, points per lab, total, max, status, notes),
+DIR/class.html and DIR/class.json (what the class got wrong, the score
+distributions), and DIR/STUDENT/ with results.json, report.html (where stoa-grade
+writes HTML) and the configure, build and grade logs. Exit status 0 when the batch ran, 1 when it could
 not start, 2 on bad usage.
 )";
 
@@ -55,6 +65,7 @@ int main(int argc, char** argv) {
     using namespace stoa::grader;
     try {
         ClassOptions options;
+        std::filesystem::path reportFrom;
         options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
         for (int i = 1; i < argc; ++i) {
             std::string argument = argv[i];
@@ -79,9 +90,16 @@ int main(int argc, char** argv) {
                     throw UsageError("--timeout expects a positive number of seconds, got '" + text + "'");
             } else if (argument == "--framework-build") {
                 options.frameworkBuild = value("the framework's build folder");
+            } else if (argument == "--similarity") {
+                options.similarity = true;
+            } else if (argument == "--similarity-only") {
+                options.similarityOnly = true;
+            } else if (argument == "--report-from") {
+                reportFrom = value("a folder of results.json files");
             } else if (argument.rfind("-", 0) == 0) {
                 throw UsageError("unknown option '" + argument +
-                                 "'; the options are --out, --jobs, --lab, --timeout, --framework-build, --help");
+                                 "'; the options are --out, --jobs, --lab, --timeout, --framework-build, "
+                                 "--similarity, --similarity-only, --report-from, --help");
             } else if (options.submissionsDir.empty()) {
                 options.submissionsDir = argument;
             } else {
@@ -89,6 +107,14 @@ int main(int argc, char** argv) {
                                  "' and '" + argument + "'");
             }
         }
+        if (!reportFrom.empty()) {
+            if (!options.submissionsDir.empty() || options.similarity || options.similarityOnly)
+                throw UsageError("--report-from grades nothing: give it a folder of results.json files and --out only");
+            return runReportFrom(reportFrom, options.outDir.empty() ? reportFrom : options.outDir,
+                                 stoa::paths::sourceDir(), std::cout, std::cerr);
+        }
+        if (options.similarity && options.similarityOnly)
+            throw UsageError("--similarity grades and compares, --similarity-only only compares: choose one");
         if (options.submissionsDir.empty()) throw UsageError("which folder of submissions? stoa-grade-class DIR --out OUT");
         if (options.outDir.empty()) throw UsageError("--out DIR is required (where the gradebook goes)");
 
