@@ -12,7 +12,7 @@ packages=(
   libosmesa6-dev libegl-dev libgl1-mesa-dri
   catch2 xvfb xauth xdotool mkdocs python3-pymdownx python3-pygments libjs-mathjax
   clang x11vnc websockify novnc chromium
-  zip unzip python3
+  zip unzip python3 similarity-tester
 )
 
 # Other systems: the same libraries from vcpkg (vcpkg.json, through
