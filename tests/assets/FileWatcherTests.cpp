@@ -4,6 +4,7 @@
 #include <stoa/assets/FileWatcher.hpp>
 
 #include <chrono>
+#include <cstdlib>
 #include <thread>
 
 using namespace stoa;
@@ -27,6 +28,30 @@ std::vector<std::string> filesOf(const std::vector<FileChange>& changes) {
     for (const FileChange& change : changes) files.push_back(change.file);
     return files;
 }
+
+/// Sets the environment variable `name` to `value` ("" removes it) while it lives.
+class ScopedVariable {
+public:
+    ScopedVariable(const char* name, const std::string& value) : m_name(name) {
+        if (const char* old = std::getenv(name)) m_old = old;
+        set(value);
+    }
+    ~ScopedVariable() { set(m_old); }
+    ScopedVariable(const ScopedVariable&) = delete;
+    ScopedVariable& operator=(const ScopedVariable&) = delete;
+
+private:
+    void set(const std::string& value) {
+#ifdef _WIN32
+        _putenv_s(m_name, value.c_str()); // "" removes it
+#else
+        if (value.empty()) unsetenv(m_name);
+        else setenv(m_name, value.c_str(), 1);
+#endif
+    }
+    const char* m_name;
+    std::string m_old;
+};
 
 FileWatcher::Backend backendOf(const std::string& name) {
     return name == "polling" ? FileWatcher::Backend::Polling : FileWatcher::Backend::Automatic;
@@ -101,8 +126,10 @@ TEST_CASE("FileWatcher: a file in a folder that does not exist yet is seen once 
 }
 
 TEST_CASE("FileWatcher: several files, each reported once per poll, in the order watched") {
+    const std::string backend = GENERATE(as<std::string>{}, "automatic", "polling");
+    INFO("backend: " << backend);
     test::TempFolder folder("watcher-many");
-    FileWatcher watcher;
+    FileWatcher watcher(backendOf(backend));
     const fs::path a = folder.write("a/one.glsl", "1");
     const fs::path b = folder.write("b/two.glsl", "2");
     watcher.watch(b);
@@ -113,4 +140,48 @@ TEST_CASE("FileWatcher: several files, each reported once per poll, in the order
     // Both writes are done before the poll: one poll reports both.
     const std::vector<FileChange> changes = pollUntilChange(watcher);
     CHECK(filesOf(changes) == std::vector<std::string>{FileWatcher::normalPath(b), FileWatcher::normalPath(a)});
+}
+
+TEST_CASE("FileWatcher: STOA_FILE_WATCHER=polling makes the automatic watcher poll") {
+    test::TempFolder folder("watcher-variable");
+    const fs::path watched = folder.write("lit.frag", "first");
+    {
+        ScopedVariable polling("STOA_FILE_WATCHER", "polling");
+        FileWatcher watcher;
+        CHECK_FALSE(watcher.usesInotify());
+        watcher.watch(watched);
+        folder.write("lit.frag", "second, longer");
+        CHECK(filesOf(pollUntilChange(watcher)) == std::vector<std::string>{FileWatcher::normalPath(watched)});
+        CHECK(watcher.takeLog().empty()); // asked for: nothing to report
+    }
+#ifdef __linux__
+    ScopedVariable other("STOA_FILE_WATCHER", "inotify");
+    CHECK(FileWatcher().usesInotify());
+#endif
+}
+
+TEST_CASE("FileWatcher: polling sees a new size at the same time, and a new time at the same size") {
+    test::TempFolder folder("watcher-stamps");
+    const fs::path watched = folder.write("height.pgm", "12345");
+    const fs::file_time_type written = fs::last_write_time(watched);
+    FileWatcher watcher(FileWatcher::Backend::Polling);
+    watcher.watch(watched);
+    CHECK(watcher.poll().empty());
+
+    SECTION("the size changed, the time was set back") {
+        folder.write("height.pgm", "1234567");
+        fs::last_write_time(watched, written);
+        CHECK(filesOf(watcher.poll()) == std::vector<std::string>{FileWatcher::normalPath(watched)});
+    }
+    SECTION("the same size, a later time") {
+        folder.write("height.pgm", "54321");
+        fs::last_write_time(watched, written + std::chrono::seconds(2));
+        CHECK(filesOf(watcher.poll()) == std::vector<std::string>{FileWatcher::normalPath(watched)});
+    }
+    SECTION("neither changed: no change, even after a write of the same bytes") {
+        folder.write("height.pgm", "12345");
+        fs::last_write_time(watched, written);
+        CHECK(watcher.poll().empty());
+    }
+    CHECK(watcher.poll().empty()); // each change once
 }

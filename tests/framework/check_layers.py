@@ -20,7 +20,7 @@ import sys
 
 # Lowest first. The GL-free layers come first; OpenGL starts at gl.
 LAYERS = [
-    ["core"],                          # errors, paths, the student-code table
+    ["core", "platform"],              # errors, paths, the student-code table; POSIX or Windows
     ["image", "geometry", "audio"],    # images and their comparison, CPU meshes, sound clips
     ["crowd"],                         # crowds as data and their simulation
     ["gl"],                            # OpenGL wrapped

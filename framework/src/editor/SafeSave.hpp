@@ -8,6 +8,8 @@
 // writes through a symbolic link into the file the link names. A save killed
 // mid-way (a signal, a crash) leaves its temporary file; the next save or
 // open of the same file removes it once its process no longer runs.
+// The platform's part (the new file, the replacement in one step, whether a
+// process runs: POSIX or Windows) is in platform/SaveFiles.hpp.
 
 #include <filesystem>
 #include <string>

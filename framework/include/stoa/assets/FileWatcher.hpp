@@ -17,9 +17,13 @@
 // watch is dropped and taken up again once a folder of that name exists,
 // reporting every watched file in it. Other files in the folder are ignored.
 //
-// Elsewhere, or where inotify fails (e.g. the system's limit of watches is
-// reached), it polls: each poll() compares every watched file's modification
-// time and size with what it saw before. The switch is logged once (takeLog()).
+// Elsewhere (Windows, macOS), where inotify fails (e.g. the system's limit of
+// watches is reached), or when the environment variable STOA_FILE_WATCHER is
+// "polling" (for folders whose changes the kernel does not see: a network file
+// system, a Windows drive seen from WSL), it polls: each poll() compares every
+// watched file's modification time and size with what it saw before. A switch
+// after a failure is logged once (takeLog()). The platform's part lives in
+// framework/src/platform/ (platform/FileChangeSource.hpp).
 
 #include <stoa/assets/ReloadPlan.hpp>
 
@@ -37,7 +41,7 @@ double steadySeconds();
 class FileWatcher {
 public:
     enum class Backend {
-        Automatic, // inotify on Linux, polling elsewhere or when inotify fails
+        Automatic, // inotify on Linux, polling elsewhere, when inotify fails or STOA_FILE_WATCHER=polling
         Polling,   // compare modification times at each poll()
     };
     using Clock = std::function<double()>;
