@@ -57,6 +57,9 @@ endif()
 # STOA_E2E_LAB narrows the extra tracks to one lab: its stubs, its first planted
 # mistake and its first equivalent (the sanitizer build's end-to-end checks).
 set(STOA_E2E_LAB "" CACHE STRING "Build the extra tracks (stubs, one mistake, one equivalent) for this lab only; empty: every lab, every variant")
+# The mutation tool's build (autograder/mutation/mutate.py): one program per
+# mutant in STOA_MUTANTS_DIR/NN_name/mistakes/*.mistake, built to bin/mutants/.
+set(STOA_MUTANTS_DIR "" CACHE PATH "Build a program per mutant in this folder (the mutation tool sets it); empty: none")
 # The reference pictures the window's comparison ('g') shows, one folder per lab
 # (LabBuildInfo::referenceDirectory).
 set(STOA_REFERENCES_DIR "${STOA_ROOT_DIR}/autograder/references" CACHE PATH
@@ -65,6 +68,7 @@ set_property(GLOBAL PROPERTY STOA_LABS "")
 set_property(GLOBAL PROPERTY STOA_MISTAKES "")
 set_property(GLOBAL PROPERTY STOA_EQUIVALENTS "")
 set_property(GLOBAL PROPERTY STOA_OUT_OF_GALLERY "")
+set_property(GLOBAL PROPERTY STOA_MUTANTS "")
 
 # The lab's header (labs/NN_name/student/lab03.hpp), which is no student file,
 # is reachable from every track's student files, wherever the track is: an
@@ -217,6 +221,14 @@ function(stoa_add_lab)
 
   if(ARG_USES AND EXISTS ${STOA_SOLUTIONS_DIR} AND NOT STOA_MAIN_TRACK_NAME STREQUAL "solutions")
     _stoa_cascade_program(${lab} "${ARG_USES}")
+  endif()
+
+  # Mutants (autograder/mutation/): variants of the solutions, as planted mistakes are.
+  if(STOA_MUTANTS_DIR AND STOA_MAIN_TRACK_NAME STREQUAL "solutions")
+    file(GLOB mutants ${STOA_MUTANTS_DIR}/${lab}/mistakes/*.mistake)
+    foreach(mutant_file IN LISTS mutants)
+      _stoa_variant_program(${lab} ${mutant_file} mutant mutants "${ARG_USES}")
+    endforeach()
   endif()
 
   if(NOT STOA_BUILD_EXTRA_TRACKS OR (STOA_E2E_LAB AND NOT STOA_E2E_LAB STREQUAL lab))
