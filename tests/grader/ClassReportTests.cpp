@@ -213,6 +213,9 @@ TEST_CASE("givenLines marks the stub's lines in the student's file, in order, wh
     std::vector<bool> given = givenLines(stub, mine);
     CHECK(given == std::vector<bool>{true, false, true, false, true, false, false});
     CHECK(givenLines({}, mine) == std::vector<bool>(mine.size(), false));
+    // Another brace style and spacing: the signature and its brace are still given.
+    std::vector<std::string> allman = {"int f( int x )", "{", "\treturn x * 2;", "}"};
+    CHECK(givenLines(stub, allman) == std::vector<bool>{true, true, false, true});
 }
 
 TEST_CASE("SIM's output is read back: token counts, percentages, runs from either side") {

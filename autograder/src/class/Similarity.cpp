@@ -26,10 +26,13 @@ namespace {
 
 constexpr std::uintmax_t kMaxFileBytes = 1u << 20;   // a larger student file is left out of the comparison
 
-std::string withoutSpaces(const std::string& line) {
+// A line as givenLines() compares it: without whitespace, and without the '{'
+// that ends it (where a function's opening brace goes is layout).
+std::string comparable(const std::string& line) {
     std::string kept;
     for (char c : line)
         if (!std::isspace(static_cast<unsigned char>(c))) kept += c;
+    if (kept.size() > 1 && kept.back() == '{') kept.pop_back();
     return kept;
 }
 
@@ -193,31 +196,36 @@ std::vector<bool> givenLines(const std::vector<std::string>& stub, const std::ve
     std::vector<std::string> b;
     std::vector<std::size_t> where;   // b's index -> student's line
     for (const std::string& line : stub)
-        if (std::string kept = withoutSpaces(line); !kept.empty()) a.push_back(kept);
+        if (std::string kept = comparable(line); !kept.empty()) a.push_back(kept);
     for (std::size_t i = 0; i < student.size(); ++i)
-        if (std::string kept = withoutSpaces(student[i]); !kept.empty()) {
+        if (std::string kept = comparable(student[i]); !kept.empty()) {
             b.push_back(kept);
             where.push_back(i);
         }
-    // The longest common subsequence, by the classic table (files are small).
+    // The longest common subsequence, by the classic table (files are small),
+    // read back from the end: a line the stub has more than once ('}') goes to
+    // the student's last match, the closing brace of the function.
     const std::size_t n = a.size();
     const std::size_t m = b.size();
-    std::vector<std::vector<int>> length(n + 1, std::vector<int>(m + 1, 0));
-    for (std::size_t i = n; i-- > 0;)
-        for (std::size_t j = m; j-- > 0;)
-            length[i][j] = a[i] == b[j] ? length[i + 1][j + 1] + 1 : std::max(length[i + 1][j], length[i][j + 1]);
+    std::vector<std::vector<int>> length(n + 1, std::vector<int>(m + 1, 0));   // of a[0, i) and b[0, j)
+    for (std::size_t i = 1; i <= n; ++i)
+        for (std::size_t j = 1; j <= m; ++j)
+            length[i][j] = a[i - 1] == b[j - 1] ? length[i - 1][j - 1] + 1 : std::max(length[i - 1][j], length[i][j - 1]);
     std::vector<bool> given(student.size(), false);
-    for (std::size_t i = 0, j = 0; i < n && j < m;) {
-        if (a[i] == b[j]) {
-            given[where[j]] = true;
-            ++i;
-            ++j;
-        } else if (length[i + 1][j] >= length[i][j + 1]) {
-            ++i;
+    for (std::size_t i = n, j = m; i > 0 && j > 0;) {
+        if (a[i - 1] == b[j - 1]) {
+            given[where[j - 1]] = true;
+            --i;
+            --j;
+        } else if (length[i - 1][j] >= length[i][j - 1]) {
+            --i;
         } else {
-            ++j;
+            --j;
         }
     }
+    // A '{' on a line of its own after a given line is that line's brace.
+    for (std::size_t k = 1; k < where.size(); ++k)
+        if (b[k] == "{" && given[where[k - 1]]) given[where[k]] = true;
     return given;
 }
 

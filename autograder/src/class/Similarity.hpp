@@ -24,7 +24,7 @@
 namespace stoa::grader {
 
 struct SimilarityOptions {
-    int minimumRun = 20;        // sim's -r: the tokens a shared run needs at least
+    int minimumRun = 24;        // sim's -r: the tokens a shared run needs at least (SIM's own default)
     int pairsShown = 10;        // per lab, the pairs whose shared runs are shown side by side
     int pairsListed = 40;       // per lab, the pairs in the ranking table
     int minimumTokens = 30;     // a student's code of a lab with fewer tokens of their own is left out
@@ -70,7 +70,8 @@ struct LabSimilarity {
 
 /// Per line of `student`: whether it is given code, i.e. in a longest common
 /// subsequence of the non-blank lines of `stub` and `student`, compared without
-/// whitespace. Blank lines are never given.
+/// whitespace and without a '{' that ends the line; a '{' alone on the line
+/// after a given line is given too (another brace style). Blank lines never are.
 std::vector<bool> givenLines(const std::vector<std::string>& stub, const std::vector<std::string>& student);
 
 /// The student files of a lab: the STUDENT_FILES of stoa_add_lab() in

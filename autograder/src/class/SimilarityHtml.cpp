@@ -28,6 +28,7 @@ td, th { border-bottom: 1px solid var(--line); padding: 0.2em 0.8em 0.2em 0; tex
 td.num, th.num { text-align: right; }
 .share { display: inline-block; height: 0.7em; background: #3a6fb0; vertical-align: middle; }
 .runs { display: grid; grid-template-columns: 1fr 1fr; gap: 0.3em 1em; }
+.runs > div { min-width: 0; }
 pre { margin: 0; padding: 0.4em; background: #8881; overflow-x: auto; font-size: 0.8em; line-height: 1.3; }
 .given { color: var(--muted); }
 .where { color: var(--muted); font-size: 0.85em; }
