@@ -13,6 +13,7 @@ packages=(
   catch2 xvfb xauth xdotool mkdocs python3-pymdownx python3-pygments libjs-mathjax
   clang x11vnc websockify novnc chromium
   zip unzip python3 similarity-tester
+  g++-mingw-w64-x86-64-posix wine64   # stoa_core built for Windows, its tests run under Wine: tests/windows/
 )
 
 # Other systems: the same libraries from vcpkg (vcpkg.json, through

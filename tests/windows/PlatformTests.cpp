@@ -72,6 +72,11 @@ TEST_CASE("Platform: readInputFile reads a regular file and refuses the rest by 
     CHECK(refusal(missing, [&] { (void)readInputFile(missing, 1024, "OBJ file"); }) == "the file does not exist");
     CHECK(contains(refusal(file, [&] { (void)readInputFile(file, 4, "OBJ file"); }),
                    "the file is too large: 8 bytes, past the limit of 4 bytes"));
+#ifdef _WIN32
+    // Windows' device names, its /dev/zero and terminal: never opened (Wine says they do not exist).
+    CHECK_THROWS_AS(readInputFile("CON", 1024, "OBJ file"), InputError);
+    CHECK_THROWS_AS(readInputFile("NUL", 1024, "OBJ file"), InputError);
+#endif
 }
 
 TEST_CASE("Platform: whether a process runs", "[platform]") {

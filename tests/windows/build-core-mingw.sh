@@ -49,11 +49,14 @@ if ! command -v "$CXX" >/dev/null 2>&1; then
   exit 77
 fi
 WINE=$(command -v wine64 || command -v wine || true)
+# Debian's wine64 alone (without its recommended wine) has no command on the PATH.
+[ -n "$WINE" ] || [ ! -x /usr/lib/wine/wine64 ] || WINE=/usr/lib/wine/wine64
 if [ -z "$WINE" ]; then
   echo "build-core-mingw: skipped: no wine64 or wine (apt-get install wine64)"
   exit 77
 fi
 
+start=$(date +%s)
 # 1. The header-only libraries, each a link.
 include="$OUT/include"
 rm -rf "$include"
@@ -81,8 +84,11 @@ done
   fi
 } > "$OUT/HeaderLibraries.cpp"
 
-# 2. The sources: the build's lists, less what is left out (see above).
+# 2. The sources: the build's lists, less what is left out (see above). No
+# folder in the paths may hold a space.
 sources_of() { # sources_of TARGET CMAKELISTS...: the .cpp files its target_sources() calls name
+  target=$1
+  shift
   for list in "$@"; do
     awk -v target="$target" -v folder="$(dirname "$list")" '
       $0 ~ "target_sources\\(" target "[ )]" { inside = 1 }
@@ -96,25 +102,29 @@ sources_of() { # sources_of TARGET CMAKELISTS...: the .cpp files its target_sour
       }' "$list"
   done
 }
-target=stoa_core
-core=$(sources_of "$ROOT/framework/CMakeLists.txt" |
+core=$(sources_of stoa_core "$ROOT/framework/CMakeLists.txt" |
        grep -v -E '/(CrowdXml|XmlAttributes|XmlFile|XmlText|DataAssets|LevelOfDetail)\.cpp$')
-target=stoa-tests-core
-tests=$(sources_of "$ROOT"/tests/*/CMakeLists.txt |
+tests=$(sources_of stoa-tests-core "$ROOT"/tests/*/CMakeLists.txt |
         grep -v -E '/tests/grader/|/(CrowdXml[A-Za-z]*|LevelOfDetail|AssetCache|[A-Za-z]*Assets|ImageHardening|ObjLoaderHardening|EditorSceneSafeSave)Tests\.cpp$')
 tests="$tests
 $ROOT/tests/support/main.cpp"
 
 # 3. Compile, JOBS at a time, and link one static program (no DLLs to find under Wine).
-flags="-std=c++17 -O1 -Wall -Wextra -D_USE_MATH_DEFINES -DGLM_FORCE_CXX17 -DGLM_ENABLE_EXPERIMENTAL
+# As the Linux build: a warning fails it (STOA_WERROR=OFF: not). Wine shows the
+# Linux root as the drive Z:. _USE_MATH_DEFINES: Windows' <cmath> has M_PI only then.
+werror=-Werror
+[ "${STOA_WERROR:-ON}" = OFF ] && werror=
+# shellcheck disable=SC2089,SC2090 # the quotes are the macros' own: STOA_SOURCE_DIR is a string
+flags="-std=c++17 -O1 -Wall -Wextra $werror -D_USE_MATH_DEFINES -DGLM_FORCE_CXX17 -DGLM_ENABLE_EXPERIMENTAL
  -DSTOA_SOURCE_DIR=\"Z:$ROOT\" -DSTOA_TEST_DATA_DIR=\"Z:$ROOT/tests/data\"
  -I$ROOT/tests/windows/support -I$ROOT/tests/support -I$ROOT/framework/include -isystem $include"
 rm -rf "$OUT/objects"
 mkdir -p "$OUT/objects"
 log="$OUT/build.log"
-: > "$log"
+# shellcheck disable=SC2090
 export CCACHE CXX flags OUT ROOT
-printf '%s\n' $core $tests "$OUT/HeaderLibraries.cpp" |
+# shellcheck disable=SC2016 # expanded by the sh that xargs starts
+printf '%s\n' "$core" "$tests" "$OUT/HeaderLibraries.cpp" |
   xargs -P "$JOBS" -I{} sh -c '
     object="$OUT/objects/$(echo "${1#$ROOT/}" | tr / _).o"
     $CCACHE $CXX $flags -c "$1" -o "$object" > "$object.log" 2>&1 || echo "build-core-mingw: cannot compile $1" >> "$object.log"' _ {}
@@ -129,7 +139,8 @@ if ! "$CXX" -static -o "$OUT/stoa-tests-core.exe" "$OUT"/objects/*.o >> "$log" 2
   echo "build-core-mingw: cannot link $OUT/stoa-tests-core.exe" >&2
   exit 1
 fi
-echo "build-core-mingw: built $OUT/stoa-tests-core.exe from $(echo "$core" | wc -l) sources of stoa_core and $(echo "$tests" | wc -l) test files"
+echo "build-core-mingw: built $OUT/stoa-tests-core.exe from $(echo "$core" | wc -l) sources of stoa_core" \
+     "and $(echo "$tests" | wc -l) test files in $(( $(date +%s) - start )) s"
 
 # 4. Run it under Wine, in a prefix of its own; no Mono or Gecko installer dialogs.
 export WINEPREFIX="$OUT/wineprefix" WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="

@@ -95,7 +95,13 @@ void flushFolder(const fs::path&) {} // MOVEFILE_WRITE_THROUGH has flushed the m
 void removeRegularFilesIf(const fs::path& folder, const std::function<bool(const std::string& name)>& isStale) {
     std::error_code error;
     for (fs::directory_iterator entry(folder, error), end; !error && entry != end; entry.increment(error)) {
-        if (!isStale(entry->path().filename().string())) continue;
+        std::string name;
+        try {
+            name = entry->path().filename().string();
+        } catch (const std::system_error&) {
+            continue; // a name the narrow encoding cannot spell is no temporary file of ours
+        }
+        if (!isStale(name)) continue;
         std::error_code ignored;
         if (fs::is_regular_file(fs::symlink_status(entry->path(), ignored))) fs::remove(entry->path(), ignored);
     }
