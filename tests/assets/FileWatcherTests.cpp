@@ -7,6 +7,12 @@
 #include <cstdlib>
 #include <thread>
 
+#ifdef __linux__
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <unistd.h>
+#endif
+
 using namespace stoa;
 namespace fs = std::filesystem;
 
@@ -185,3 +191,31 @@ TEST_CASE("FileWatcher: polling sees a new size at the same time, and a new time
     }
     CHECK(watcher.poll().empty()); // each change once
 }
+
+#ifdef __linux__
+TEST_CASE("FileWatcher: when inotify cannot start, it polls and says so once") {
+    test::TempFolder folder("watcher-no-inotify");
+    const fs::path watched = folder.write("lit.frag", "first");
+    // No descriptor left for inotify_init1(): the soft limit on open files is
+    // set to the lowest free descriptor while the watcher is made.
+    const int lowest = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+    REQUIRE(lowest >= 0);
+    ::close(lowest);
+    rlimit limit{};
+    REQUIRE(::getrlimit(RLIMIT_NOFILE, &limit) == 0);
+    const rlimit restore = limit;
+    limit.rlim_cur = static_cast<rlim_t>(lowest);
+    REQUIRE(::setrlimit(RLIMIT_NOFILE, &limit) == 0);
+    FileWatcher watcher;
+    REQUIRE(::setrlimit(RLIMIT_NOFILE, &restore) == 0);
+
+    CHECK_FALSE(watcher.usesInotify());
+    const std::vector<std::string> log = watcher.takeLog();
+    REQUIRE(log.size() == 1);
+    CHECK(log[0].find("FileWatcher: inotify_init1() failed (Too many open files); polling") == 0);
+    watcher.watch(watched);
+    folder.write("lit.frag", "second, longer");
+    CHECK(filesOf(pollUntilChange(watcher)) == std::vector<std::string>{FileWatcher::normalPath(watched)});
+    CHECK(watcher.takeLog().empty());
+}
+#endif
