@@ -70,7 +70,8 @@ private:
     /// Adds the watch of `folder`. With `changed`, the folder has just
     /// appeared: files written into it before the watch existed count as changed.
     void addWatch(const std::string& folder, Folder& entry, std::vector<bool>* changed) {
-        const std::uint32_t mask = IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE | IN_DELETE_SELF | IN_MOVE_SELF | IN_ONLYDIR;
+        const std::uint32_t mask =
+            IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE | IN_DELETE_SELF | IN_MOVE_SELF | IN_ONLYDIR;
         const int wd = inotify_add_watch(m_fd, folder.c_str(), mask);
         if (wd < 0) {
             // A folder that does not exist (yet) is retried at each poll; any

@@ -25,7 +25,8 @@ RegularFile::RegularFile(const fs::path& path, const char* kind)
     std::error_code error;
     const fs::file_status status = fs::status(path, error);
     if (error || status.type() == fs::file_type::not_found) {
-        throw InputError(m_name, 0, describeOpenError(error ? error : std::make_error_code(std::errc::no_such_file_or_directory)));
+        throw InputError(m_name, 0,
+                         describeOpenError(error ? error : std::make_error_code(std::errc::no_such_file_or_directory)));
     }
     if (status.type() != fs::file_type::regular) {
         throw InputError(m_name, 0, "this is " + describeFileType(status.type()) + ", not " + kind);

@@ -50,7 +50,8 @@ ProcessId currentProcessId() { return static_cast<ProcessId>(::GetCurrentProcess
 
 bool processHasEnded(ProcessId pid) {
     if (pid <= 0 || pid > static_cast<ProcessId>(MAXDWORD)) return false;
-    HandleCloser process{::OpenProcess(PROCESS_QUERY_LIMITED_INFORMATION | SYNCHRONIZE, FALSE, static_cast<DWORD>(pid))};
+    HandleCloser process{
+        ::OpenProcess(PROCESS_QUERY_LIMITED_INFORMATION | SYNCHRONIZE, FALSE, static_cast<DWORD>(pid))};
     if (process.handle == nullptr) {
         // No such process; ERROR_ACCESS_DENIED is one that runs for someone else.
         return ::GetLastError() == ERROR_INVALID_PARAMETER;
@@ -64,8 +65,8 @@ bool processHasEnded(ProcessId pid) {
 
 std::error_code writeNewFile(const fs::path& path, const std::string& text, const fs::path&) {
     // The permission bits need no copying: a file that may be replaced is writable, and so is the new one.
-    HandleCloser file{::CreateFileW(path.c_str(), GENERIC_WRITE, 0, nullptr, CREATE_NEW, FILE_ATTRIBUTE_NORMAL,
-                                    nullptr)};
+    HandleCloser file{
+        ::CreateFileW(path.c_str(), GENERIC_WRITE, 0, nullptr, CREATE_NEW, FILE_ATTRIBUTE_NORMAL, nullptr)};
     if (file.handle == INVALID_HANDLE_VALUE) {
         const DWORD code = ::GetLastError();
         if (code == ERROR_FILE_EXISTS || code == ERROR_ALREADY_EXISTS) {

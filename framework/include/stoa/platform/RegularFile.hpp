@@ -6,6 +6,7 @@
 // Without POSIX (Windows) the type comes from std::filesystem::status() and
 // the bytes from a std::ifstream.
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
