@@ -11,7 +11,8 @@
 #                  cascade run (graded with the earlier lab's solution; Cascade.hpp).
 #                  In the layout of releases before the student/ folders (his files
 #                  at labs/NN_name/FILE), which the grader still accepts.
-# Then checks the gradebook rows and each student's results.json.
+# Then checks the gradebook rows, each student's results.json, and that class.json
+# says what the gradebook says.
 #
 #   [STOA_GRADE_CLASS_STUDENTS="alice dave"] grade_class.sh <stoa-grade-class> <stoa-grade> <source dir> <work dir>
 #
@@ -80,6 +81,17 @@ PY
 fi
 
 "$grade_class" "$work/submissions" --out "$work/out" --jobs 2
+
+# The class report says what the gradebook says (check_class_report.py, e2e.class_report).
+python3 - "$(dirname "$0")" "$work/out" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+import check_class_report as report
+report.check_against_gradebook(sys.argv[2])
+for message in report.failures:
+    print("FAIL: class.json:", message)
+sys.exit(1 if report.failures else 0)
+PY
 
 python3 - "$work/out" "$broken_lab" "$("$grade" --help | grep -c -- --html || true)" "$dave_lab" "$dave_user" \
           "$students" <<'PY'

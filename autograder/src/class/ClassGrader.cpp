@@ -382,8 +382,8 @@ void writeClassPages(const ClassOptions& options, const Framework& framework, co
     try {
         writeClassReport(options.outDir, summarizeGrades(grades, framework, options.outDir));
         double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        out << "wrote " << (options.outDir / "class.html").string() << " and class.json (" << formatPoints(seconds)
-            << " s)" << std::endl;
+        out << "wrote " << (options.outDir / "class.html").string() << " and class.json ("
+            << static_cast<int>(seconds * 1000.0 + 0.5) << " ms)" << std::endl;
     } catch (const std::exception& error) {
         err << "stoa-grade-class: no class report: " << error.what() << "\n";
     }

@@ -100,9 +100,9 @@ LabSummary summarizeLab(const LabCases& lab, const std::vector<StudentRecord>& s
 }
 
 // What to teach again, most students first: each gallery mistake a hint named,
-// each picture case and property check students got wrong (failed, not merely
-// unattempted) where no hint named the mistake (a named one says it better),
-// each lab that did not compile for some.
+// each picture case students got wrong (failed, not merely unattempted) in a
+// lab where no hint named their mistake (a named one says it better), each
+// property check that failed, each lab that did not compile for some.
 std::vector<TeachingPoint> teachingPoints(const std::vector<LabSummary>& labs, const std::vector<StudentRecord>& students) {
     std::vector<TeachingPoint> points;
     for (const LabSummary& lab : labs) {
@@ -115,9 +115,16 @@ std::vector<TeachingPoint> teachingPoints(const std::vector<LabSummary>& labs, c
             for (const StudentRecord& student : students) {
                 auto found = student.labs.find(lab.lab);
                 if (found == student.labs.end()) continue;
-                for (const CaseRecord& result : found->second.cases)
-                    if (result.name == summary.name && result.status == statusName(GradeStatus::Failed) &&
-                        result.hintMistake.empty())
+                const std::vector<CaseRecord>& cases = found->second.cases;
+                // A hint on any case of the lab explains the student's other wrong
+                // pictures there too (a hint needs the failures to agree with its
+                // mistake, Hints.hpp, and hidden cases get none); a property check
+                // tests a requirement of its own.
+                if (!summary.propertyCheck &&
+                    std::any_of(cases.begin(), cases.end(), [](const CaseRecord& c) { return !c.hintMistake.empty(); }))
+                    continue;
+                for (const CaseRecord& result : cases)
+                    if (result.name == summary.name && result.status == statusName(GradeStatus::Failed))
                         point.students.push_back(student.student);
             }
             if (!point.students.empty()) points.push_back(point);
