@@ -195,14 +195,21 @@ TEST_CASE("readResultsFolder takes STUDENT/results.json and STUDENT.json, and na
     folder.write("bob.json", kResults);
     folder.write("carol/results.json", "{\"tests\": [");
     folder.write("class.json", "{}");   // an earlier report, not a student
+    folder.write("dan/submission-files.txt", "");   // stoa-grade-class graded nothing of dan's
+    folder.write("notes/readme.txt", "");           // another folder: not a student
     std::vector<StudentRecord> records = readResultsFolder(folder.path(), unreadable);
     REQUIRE(records.size() == 2);
     CHECK(records[0].student == "alice");
     CHECK(records[0].reportLink == "alice/report.html");
     CHECK(records[1].student == "bob");
     CHECK(records[1].reportLink.empty());
-    REQUIRE(unreadable.size() == 1);
-    CHECK(unreadable[0].find("carol/results.json") != std::string::npos);
+    REQUIRE(unreadable.size() == 2);
+    auto names = [&](const std::string& text) {
+        return std::any_of(unreadable.begin(), unreadable.end(),
+                           [&](const std::string& why) { return why.find(text) != std::string::npos; });
+    };
+    CHECK(names("carol/results.json:"));
+    CHECK(names("dan/results.json: none"));
 }
 
 TEST_CASE("givenLines marks the stub's lines in the student's file, in order, whatever the spacing") {

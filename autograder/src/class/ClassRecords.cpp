@@ -208,6 +208,9 @@ std::vector<StudentRecord> readResultsFolder(const std::filesystem::path& folder
         if (entry.is_directory(error)) {
             if (std::filesystem::exists(entry.path() / "results.json", error))
                 found.emplace_back(name, entry.path() / "results.json");
+            else if (std::filesystem::exists(entry.path() / "submission-files.txt", error))   // stoa-grade-class's
+                unreadable.push_back((entry.path() / "results.json").string() + ": none; nothing was graded "
+                                     "(the student's line in gradebook.csv says why)");
         } else if (entry.path().extension() == ".json" && name != "class.json") {
             found.emplace_back(entry.path().stem().string(), entry.path());
         }

@@ -329,7 +329,7 @@ int writeSimilarityReport(const std::map<std::string, std::filesystem::path>& su
         err << "stoa-grade-class: no similarity report: " << kSimInstallHint << "\n";
         return 1;
     }
-    std::vector<LabSimilarity> results = compareSubmissions(submissions, sourceDir, labs, outDir / "similarity", options);
+    std::vector<LabSimilarity> results = compareSubmissions(submissions, sourceDir, labs, outDir / ".similarity", options);
     for (const LabSimilarity& lab : results)
         if (!lab.error.empty()) err << "stoa-grade-class: similarity of " << lab.lab << ": " << lab.error << "\n";
     writeReportFile(outDir / "similarity.json", similarityJson(results), "the similarity figures");
