@@ -118,17 +118,40 @@ werror=-Werror
 flags="-std=c++17 -O1 -Wall -Wextra $werror -D_USE_MATH_DEFINES -DGLM_FORCE_CXX17 -DGLM_ENABLE_EXPERIMENTAL
  -DSTOA_SOURCE_DIR=\"Z:$ROOT\" -DSTOA_TEST_DATA_DIR=\"Z:$ROOT/tests/data\"
  -I$ROOT/tests/windows/support -I$ROOT/tests/support -I$ROOT/framework/include -isystem $include"
-rm -rf "$OUT/objects"
-mkdir -p "$OUT/objects"
+rm -rf "$OUT/objects" "$OUT/pch"
+mkdir -p "$OUT/objects" "$OUT/pch"
 log="$OUT/build.log"
+# Precompiled headers, as the Linux build has them (most of a file's compile
+# time is parsing the standard library and GLM): the headers of
+# framework/cmake/StoaPrecompiledHeaders.cmake, and Catch for the tests.
+headers=$(sed -n '/^set(STOA_PRECOMPILED/,/)/p' "$ROOT/framework/cmake/StoaPrecompiledHeaders.cmake" | grep -o '<[^>]*>')
+for name in core tests; do
+  {
+    for header in $headers; do echo "#include $header"; done
+    [ "$name" = core ] || echo "#include \"$ROOT/tests/support/catch.hpp\""
+  } > "$OUT/pch/$name.hpp"
+done
 # shellcheck disable=SC2090
 export CCACHE CXX flags OUT ROOT
+# ccache takes precompiled headers only when told that their time stamps may differ.
+export CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime
+# shellcheck disable=SC2016 # expanded by the sh that xargs starts
+printf '%s\n' "$OUT/pch/core.hpp" "$OUT/pch/tests.hpp" |
+  xargs -P "$JOBS" -I{} sh -c '$CCACHE $CXX $flags -x c++-header -c "$1" -o "$1.gch" > "$1.log" 2>&1 ||
+                                echo "build-core-mingw: cannot compile $1" >> "$1.log"' _ {}
+cat "$OUT"/pch/*.log > "$log"
+# Each file with its precompiled header; main.cpp (CATCH_CONFIG_MAIN before Catch) and the libraries' code without.
 # shellcheck disable=SC2016 # expanded by the sh that xargs starts
 printf '%s\n' "$core" "$tests" "$OUT/HeaderLibraries.cpp" |
   xargs -P "$JOBS" -I{} sh -c '
-    object="$OUT/objects/$(echo "${1#$ROOT/}" | tr / _).o"
-    $CCACHE $CXX $flags -c "$1" -o "$object" > "$object.log" 2>&1 || echo "build-core-mingw: cannot compile $1" >> "$object.log"' _ {}
-cat "$OUT"/objects/*.log > "$log"
+    case "$1" in
+      */tests/support/main.cpp|*/HeaderLibraries.cpp) pch= ;;
+      "$ROOT"/tests/*) pch="-include $OUT/pch/tests.hpp" ;;
+      *) pch="-include $OUT/pch/core.hpp" ;;
+    esac
+    object="$OUT/objects/$(echo "${1#"$ROOT"/}" | tr / _).o"
+    $CCACHE $CXX $flags $pch -c "$1" -o "$object" > "$object.log" 2>&1 || echo "build-core-mingw: cannot compile $1" >> "$object.log"' _ {}
+cat "$OUT"/objects/*.log >> "$log"
 rm -f "$OUT"/objects/*.log
 if grep -q "^build-core-mingw: cannot compile" "$log"; then
   cat "$log" >&2
