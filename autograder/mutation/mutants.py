@@ -14,7 +14,8 @@ the kinds of slip students make:
   normalize    normalize(x) becomes x
   swizzle      a GLSL swizzle's first two components exchanged (.xz -> .zx)
 
-Each mutant is written as a .mistake file (the planted mistakes' format), so the
+Lines that assert (STOA_ASSERT, assert) are left alone: they check the caller,
+and no case calls with inputs they refuse. Each mutant is written as a .mistake file (the planted mistakes' format), so the
 build makes it a program the way it makes a planted mistake one.
 """
 import hashlib
@@ -33,6 +34,11 @@ DECLARATION_WORDS = {"const", "constexpr", "static", "auto", "float", "double", 
                      "vec2", "vec3", "vec4", "mat3", "mat4", "ivec2", "ivec3", "uvec2", "std", "glm", "struct",
                      "return", "if", "for", "while", "else", "switch", "case", "break", "continue", "in", "out",
                      "uniform", "layout", "using", "namespace", "template", "typename", "size_t", "char", "void"}
+
+
+# An assertion checks the caller, not the result: with the valid inputs every
+# case gives, weakening or strengthening it changes nothing a case can see.
+ASSERTION = re.compile(r"\b(STOA_ASSERT|assert|static_assert)\s*\(")
 
 
 @dataclass
@@ -237,7 +243,7 @@ def mutants_of_file(lab, root, relative):
     functions = enclosing_functions(lines)
     result = []
     for index in code_lines(text):
-        if lines[index].strip() in given:
+        if lines[index].strip() in given or ASSERTION.search(lines[index]):
             continue
         for rule, new_line in line_mutants(lines[index], glsl):
             context = unique_context(lines, index, new_line)

@@ -16,8 +16,9 @@ with the lab's cases and property checks (stoa-grade --bin-dir). A mutant is
   equivalent    listed in equivalent-mutants.txt with why it cannot change the
                 result (not built, not counted)
 The score is killed / (killed + survived). A hint that fires on a mutant must
-be a gallery mistake of the same file and function: one naming another cause is
-reported (hints are right or silent).
+be a gallery mistake of the same file and function, or one whose hint lists the
+mutant's file among the known causes: one naming another cause is reported
+(hints are right or silent).
 
 Writes DIR/mutation-report.md (per lab, then every survivor as a diff) and
 DIR/mutation-report.json; prints progress on stderr and the summary on stdout.
@@ -81,7 +82,7 @@ def labs_named(names):
 
 
 def gallery_causes(lab):
-    """{mistake name: (file, function)} for the lab's planted mistakes."""
+    """{mistake name: (file, function, hint)} for the lab's planted mistakes."""
     causes = {}
     for path in sorted((ROOT / "solutions" / lab / "mistakes").glob("*.mistake")):
         text = path.read_text()
@@ -90,8 +91,19 @@ def gallery_causes(lab):
         source = (ROOT / "solutions" / lab / "student" / file).read_text()
         line = source[:source.find(find)].count("\n") if find in source else 0
         functions = mutation.enclosing_functions(source.splitlines())
-        causes[path.stem] = (file, functions[line] if line < len(functions) else "")
+        hint = re.search(r"^hint:\s*(.*)$", text, re.M).group(1)
+        causes[path.stem] = (file, functions[line] if line < len(functions) else "", hint)
     return causes
+
+
+def names_cause(cause, mutant):
+    """Whether a gallery mistake's hint names the mutant's cause: the mistake is in the
+    same function of the same file, or its hint names the mutant's file among the known
+    causes (as stoa-grade --check-hints accepts for mistakes outside the gallery)."""
+    if cause is None:
+        return False
+    file, function, hint = cause
+    return (file, function) == (mutant.file, mutant.function) or Path(mutant.file).name in hint
 
 
 def configure_and_build(build, mutants_dir, chosen, jobs):
@@ -183,7 +195,7 @@ def main():
         work = Path(temporary)
         for number, mutant in enumerate(chosen, 1):
             status, failed, hints = grade(build, mutant, args.jobs, work)
-            wrong_hints = [h for h in hints if causes[mutant.lab].get(h) != (mutant.file, mutant.function)]
+            wrong_hints = [h for h in hints if not names_cause(causes[mutant.lab].get(h), mutant)]
             verdicts.append({"lab": mutant.lab, "id": mutant.id, "rule": mutant.rule, "file": mutant.file,
                              "line": mutant.line, "function": mutant.function, "status": status, "failed": failed,
                              "hints": hints, "wrong_hints": wrong_hints, "diff": mutant.diff()})
