@@ -62,8 +62,19 @@ CheckResult pickWithinACircleBody() {
         if (int got = stoa::objectAtPixel(stencil, outside, 4); got != -1)
             return CheckResult::fail("a mouse outside the read-back at " + pixel(outside.x, outside.y) +
                                      " picked object " + std::to_string(got));
+    // The picture's own corners are pixels like any other: a click on an object there picks it.
+    stencil = background(21, 15);
+    const glm::ivec2 corners[] = {{0, 0}, {20, 0}, {0, 14}, {20, 14}};
+    for (std::size_t i = 0; i < 4; ++i) put(stencil, corners[i].x, corners[i].y, static_cast<std::uint8_t>(i + 2));
+    for (std::size_t i = 0; i < 4; ++i)
+        if (int got = stoa::objectAtPixel(stencil, corners[i], 0); got != static_cast<int>(i + 1))
+            return CheckResult::fail("value " + std::to_string(i + 2) + " under the mouse at the picture's corner " +
+                                     pixel(corners[i].x, corners[i].y) + ", radius 0: expected object " +
+                                     std::to_string(i + 1) + ", got " + std::to_string(got) +
+                                     "; the first and last rows and columns are inside the read-back "
+                                     "(docs: From the mouse to a stencil value)");
     return CheckResult::pass("the radius is a circle including its edge, ties go to the read-back's order, "
-                             "the background and outside pick nothing");
+                             "the background and outside pick nothing, the corners pick what is there");
 }
 
 CheckResult mergeRulesBody() {
