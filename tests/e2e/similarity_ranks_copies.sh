@@ -3,10 +3,11 @@
 # code never counts. Two classes, nothing built or graded:
 #
 #   the made-up course in similarity_course/ (through STOA_SOURCE_DIR): ann, ben
-#   and cid solved its lab on their own (C++ and GLSL); dora is ann's work with
-#   every local name renamed and the functions in the reverse order; ed is
-#   ben's, reformatted. The pairs ann-dora and ben-ed must be the first two,
-#   above every independent pair. (The course is made up so that the
+#   and cid solved its two labs on their own (C++ and GLSL for sim_c, notes in
+#   plain text for sim_text); dora is ann's work with every local name renamed
+#   and the functions in the reverse order (her notes reflowed); ed is ben's,
+#   reformatted. In each lab the pairs ann-dora and ben-ed must be the first
+#   two, above every independent pair. (The course is made up so that the
 #   independent solutions give nothing away in the student release.)
 #
 #   this tree's first lab, where solutions/ exists: alice (the solution pasted
@@ -32,6 +33,10 @@ for file in words.cpp tone.glsl; do
   python3 "$here/disguise_copy.py" reformat "$course/students/ben/01_words/$file" \
       "$work/course/ed/01_words/$file" "$course/labs/01_words/student/$file"
 done
+# The notes (sim_text): dora's are ann's, reflowed to other lines; ed's are ben's, reflowed too.
+mkdir -p "$work/course/dora/02_notes" "$work/course/ed/02_notes"
+fmt -w 60 "$course/students/ann/02_notes/notes.txt" > "$work/course/dora/02_notes/notes.txt"
+fmt -w 120 "$course/students/ben/02_notes/notes.txt" > "$work/course/ed/02_notes/notes.txt"
 STOA_SOURCE_DIR=$course "$grade_class" "$work/course" --out "$work/course-out" --similarity-only
 
 # This tree's first lab.
@@ -64,19 +69,21 @@ def ranking(out, lab_name):
         print(f"  {rank}. {pair['a']}-{pair['b']}: {pair['score']:.1f}% ({pair['percent_a']}% / {pair['percent_b']}%)")
     return entry
 
-course = ranking(os.path.join(work, "course-out"), "01_words")
-pairs = [(frozenset((p["a"], p["b"])), p["score"]) for p in course["pairs"]]
-copies = {frozenset(("ann", "dora")), frozenset(("ben", "ed"))}
-check({pair for pair, _ in pairs[:2]} == copies, f"the first two pairs are {[sorted(p) for p, _ in pairs[:2]]}, expected ann-dora and ben-ed")
-copy_scores = [score for pair, score in pairs if pair in copies]
 # A pair is independent unless it is a copy and its original (dora is ann's, ed is ben's).
 originals = {"dora": "ann", "ed": "ben"}
 def independent_pair(pair):
-    names = {originals.get(name, name) for name in pair}
-    return len(names) == 2
-independent = [score for pair, score in pairs if independent_pair(pair)]
-check(len(copy_scores) == 2 and min(copy_scores) > max(independent or [0]),
-      f"copies {copy_scores} do not all rank above the independent pairs (best {max(independent or [0])})")
+    return len({originals.get(name, name) for name in pair}) == 2
+copies = {frozenset(("ann", "dora")), frozenset(("ben", "ed"))}
+for lab_name in ("01_words", "02_notes"):
+    course = ranking(os.path.join(work, "course-out"), lab_name)
+    pairs = [(frozenset((p["a"], p["b"])), p["score"]) for p in course["pairs"]]
+    check({pair for pair, _ in pairs[:2]} == copies,
+          f"{lab_name}: the first two pairs are {[sorted(p) for p, _ in pairs[:2]]}, expected ann-dora and ben-ed")
+    copy_scores = [score for pair, score in pairs if pair in copies]
+    independent = [score for pair, score in pairs if independent_pair(pair)]
+    check(len(copy_scores) == 2 and min(copy_scores) > max(independent or [0]),
+          f"{lab_name}: copies {copy_scores} do not all rank above the independent pairs (best {max(independent or [0])})")
+    check(course["tool"] == ("sim_c" if lab_name == "01_words" else "sim_text"), f"{lab_name} was read by {course['tool']}")
 html = open(os.path.join(work, "course-out", "similarity.html"), encoding="utf-8").read()
 check("does not accuse" in html, "similarity.html does not say that it ranks and does not accuse")
 check("<script" not in html.lower(), "similarity.html has a script")

@@ -231,6 +231,7 @@ TEST_CASE("SIM's output is read back: token counts, percentages, runs from eithe
                               "s0001.txt consists for 12 % of s0002.txt material\n"
                               "s0002.txt consists for 88 % of s0001.txt material\n";
     CHECK(parseTokenCounts(percentages) == std::map<std::string, int>{{"s0001.txt", 671}, {"s0002.txt", 90}});
+    CHECK(parseTokenCounts("File s0003.txt: 25 words, 2 lines\n") == std::map<std::string, int>{{"s0003.txt", 25}});
     auto parsed = parsePercentages(percentages);
     CHECK(parsed.at({"s0001.txt", "s0002.txt"}) == 12);
     CHECK(parsed.at({"s0002.txt", "s0001.txt"}) == 88);

@@ -155,7 +155,8 @@ LabSimilarity compareLab(const std::map<std::string, std::filesystem::path>& sub
     std::filesystem::create_directories(labDir);
     std::vector<StudentText> texts = writeTexts(submissions, sourceDir, lab, result.files, labDir);
 
-    const std::string run = std::to_string(options.minimumRun);
+    // sim_text counts words, not tokens: it keeps its own minimum run (8 words).
+    const std::string run = std::to_string(result.tool == "sim_c" ? options.minimumRun : 8);
     std::vector<std::string> argv = {tool.string(), "-e", "-p", "-s", "-a", "-t", "1", "-r", run, "-o", "percentages.txt"};
     for (const StudentText& text : texts) argv.push_back(text.simName);
     ProcessOutcome outcome = runProcess(argv, labDir, simLimits(labDir, options.timeoutSeconds));
@@ -268,7 +269,7 @@ std::map<std::pair<std::string, std::string>, int> parsePercentages(const std::s
 }
 
 std::map<std::string, int> parseTokenCounts(const std::string& output) {
-    static const std::regex line(R"(^File (\S+): (\d+) tokens?, \d+ lines?\s*$)");
+    static const std::regex line(R"(^File (\S+): (\d+) (?:tokens?|words?), \d+ lines?\s*$)");   // sim_text counts words
     std::map<std::string, int> tokens;
     std::istringstream lines(output);
     std::smatch match;

@@ -24,7 +24,8 @@
 namespace stoa::grader {
 
 struct SimilarityOptions {
-    int minimumRun = 24;        // sim's -r: the tokens a shared run needs at least (SIM's own default)
+    int minimumRun = 24;        // sim_c's -r: the tokens a shared run needs at least (SIM's own default);
+                                // sim_text keeps its default of 8 words
     int pairsShown = 10;        // per lab, the pairs whose shared runs are shown side by side
     int pairsListed = 40;       // per lab, the pairs in the ranking table
     int minimumTokens = 30;     // a student's code of a lab with fewer tokens of their own is left out
@@ -84,7 +85,7 @@ std::string simToolFor(const std::vector<std::string>& files);
 /// SIM's -p lines "A consists for N % of B material", as (A, B) -> N.
 std::map<std::pair<std::string, std::string>, int> parsePercentages(const std::string& output);
 
-/// SIM's "File A: N tokens, M lines" lines, as A -> N.
+/// SIM's "File A: N tokens, M lines" lines (sim_text: "N words"), as A -> N.
 std::map<std::string, int> parseTokenCounts(const std::string& output);
 
 /// SIM's -n lines "A: line 14-71 | B: line 12-69 [671]" between `fileA` and
