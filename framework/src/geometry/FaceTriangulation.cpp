@@ -4,6 +4,7 @@
 #include <stoa/geometry/ObjLoader.hpp>
 
 #include <glm/common.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
@@ -127,7 +128,7 @@ void triangulate(const std::vector<Corner>& face, const std::vector<glm::vec3>& 
         if (turn < -tolerance * glm::length(c - a)) convex = false;
         sweep += std::atan2(turn, glm::dot(e1, e2));
     }
-    convex = convex && std::abs(sweep - 2.0 * M_PI) < 0.5;
+    convex = convex && std::abs(sweep - 2.0 * glm::pi<double>()) < 0.5;
     if (convex) {
         for (std::size_t k = 1; k + 1 < n; ++k) {
             out.push_back(face[0]);
