@@ -28,8 +28,6 @@
 #     tests/windows/PlatformTests.cpp.
 # Header-only libraries come from Debian's /usr/include through a folder of
 # links to just them (OUT/include): /usr/include itself is never on the path.
-# tests/support/TempFolder.hpp uses mkdtemp(); tests/windows/support/ has a
-# portable one that comes first on the path.
 set -eu
 
 if [ $# -lt 1 ]; then
@@ -117,7 +115,7 @@ werror=-Werror
 # shellcheck disable=SC2089,SC2090 # the quotes are the macros' own: STOA_SOURCE_DIR is a string
 flags="-std=c++17 -O1 -Wall -Wextra $werror -D_USE_MATH_DEFINES -DGLM_FORCE_CXX17 -DGLM_ENABLE_EXPERIMENTAL
  -DSTOA_SOURCE_DIR=\"Z:$ROOT\" -DSTOA_TEST_DATA_DIR=\"Z:$ROOT/tests/data\"
- -I$ROOT/tests/windows/support -I$ROOT/tests/support -I$ROOT/framework/include -isystem $include"
+ -I$ROOT/tests/support -I$ROOT/framework/include -isystem $include"
 rm -rf "$OUT/objects" "$OUT/pch"
 mkdir -p "$OUT/objects" "$OUT/pch"
 log="$OUT/build.log"
