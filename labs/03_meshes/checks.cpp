@@ -6,6 +6,7 @@
 #include "lab03.hpp"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include <cmath>
 #include <string>
@@ -41,7 +42,47 @@ std::string problemWith(const glm::vec3& normal, const glm::vec3& expected) {
     return "";
 }
 
+// Two triangles that share vertex 0 at the origin: a large one in the plane z = 0
+// (normal +Z) whose angle there is 150 degrees, and a small one in the plane y = 0
+// (normal +Y) whose angle there is 30 degrees. Edge lengths 4 and 0.5.
+stoa::Mesh obtuseFan() {
+    stoa::Mesh mesh;
+    const float pi = glm::pi<float>();
+    const glm::vec3 positions[] = {{0, 0, 0},
+                                   {4, 0, 0},
+                                   {4.0f * std::cos(5.0f * pi / 6.0f), 4.0f * std::sin(5.0f * pi / 6.0f), 0},
+                                   {0, 0, 0.5f},
+                                   {0.5f * std::sin(pi / 6.0f), 0, 0.5f * std::cos(pi / 6.0f)}};
+    for (const glm::vec3& position : positions) {
+        stoa::Vertex vertex{};
+        vertex.position = position;
+        mesh.vertices.push_back(vertex);
+    }
+    mesh.indices = {0, 1, 2, 0, 3, 4};
+    return mesh;
+}
+
 } // namespace
+
+stoa::CheckResult checkAngleWeights() {
+    stoa::Mesh fan = obtuseFan();
+    stoa::smoothNormals(fan);
+    // 150 degrees of +Z and 30 of +Y: (0, 1, 5) / |(0, 1, 5)|, whatever the triangles' sizes.
+    const glm::vec3 expected = glm::normalize(glm::vec3(0.0f, 1.0f, 5.0f));
+    const glm::vec3 got = fan.vertices[0].normal;
+    const std::string what = "smoothNormals() at a vertex shared by a large triangle with a 150 degree corner there "
+                             "(normal +Z) and a small one with a 30 degree corner (normal +Y): the normal ";
+    if (const std::string problem = problemWith(got, expected); !problem.empty()) {
+        if (near(got, glm::normalize(glm::vec3(0.0f, 1.0f, 4.0f))) || near(got, glm::normalize(glm::vec3(0.0f, 1.0f, 1.0f))))
+            return stoa::CheckResult::fail(what + problem + ": the 150 degree corner counts as " +
+                                           (near(got, glm::normalize(glm::vec3(0.0f, 1.0f, 1.0f))) ? "30" : "120") +
+                                           " degrees; an obtuse angle needs acos of the whole cosine, from -1 to 1 "
+                                           "(docs: Smooth normals)");
+        return stoa::CheckResult::fail(what + problem + ": each unit face normal counts by its angle at the vertex, "
+                                                        "150 and 30 degrees, not by the triangle's size (docs: Smooth normals)");
+    }
+    return stoa::CheckResult::pass("an obtuse corner counts with its whole angle, and a triangle's size does not count");
+}
 
 stoa::CheckResult checkDegenerateTriangles() {
     const glm::vec3 up(0.0f, 1.0f, 0.0f), tilted = glm::normalize(glm::vec3(0.0f, 1.0f, 1.0f));

@@ -11,5 +11,6 @@ namespace lab03 {
 /// triangle uses: every normal is a finite unit vector, a degenerate triangle
 /// adds nothing, and what gets nothing is +Y (docs: "Facet normals", "Smooth normals").
 stoa::CheckResult checkDegenerateTriangles();
+stoa::CheckResult checkAngleWeights();
 
 } // namespace lab03

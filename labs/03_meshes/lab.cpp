@@ -127,6 +127,7 @@ public:
 
     stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
         if (spec.check == "degenerate_triangles") return lab03::checkDegenerateTriangles();
+        if (spec.check == "angle_weights") return lab03::checkAngleWeights();
         return Lab::runCheck(spec);
     }
 
