@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """How many realistic bugs the grader catches: a mutation score per lab.
 
-    autograder/mutation/mutate.py [--lab NN ...] [--sample N] [--seed S] [--jobs N]
+    autograder/mutation/mutate.py [--lab NN ...] [--sample N] [--seed S] [--mutant ID ...] [--jobs N]
                                   [--build-dir DIR] [--out DIR] [--list] [--min-score PERCENT]
 
 For each lab (all by default), makes mutants of the solutions' student files
@@ -148,6 +148,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--lab", action="append", default=[], help="NN or NN_name (repeatable); default: every lab")
     parser.add_argument("--sample", type=int, default=0, help="grade N mutants a lab (0: all)")
+    parser.add_argument("--mutant", action="append", default=[], metavar="ID",
+                        help="only this mutant (repeatable; IDs as the report and --list give them)")
     parser.add_argument("--seed", type=int, default=1, help="which sample (default 1)")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     parser.add_argument("--build-dir", type=Path, default=ROOT / "build-mutants")
@@ -169,9 +171,16 @@ def main():
         for mutant_id in stale:
             say(f"mutate: {EQUIVALENTS.name} lists {lab} {mutant_id}, which is no longer a mutant (the solution changed)")
         live = sorted((m for m in every if (lab, m.id) not in equivalents), key=lambda m: m.id)
+        equivalent = len(every) - len(live)
+        if args.mutant:
+            live = [m for m in live if m.id in args.mutant]
         picked = random.Random(f"{args.seed}:{lab}").sample(live, min(args.sample, len(live))) if args.sample else live
-        per_lab[lab] = {"generated": len(every), "equivalent": len(every) - len(live), "graded": len(picked)}
+        per_lab[lab] = {"generated": len(every), "equivalent": equivalent, "graded": len(picked)}
         chosen += picked
+    unknown = set(args.mutant) - {m.id for m in chosen}
+    if unknown:
+        parser.error(f"--mutant {', '.join(sorted(unknown))}: no such mutant in {', '.join(labs)} "
+                     "(or listed as equivalent)")
     if args.list:
         for mutant in chosen:
             print(mutant.id)
