@@ -98,6 +98,38 @@ const OsMesaLibrary& osMesaLibrary() {
 
 gl::ProcAddress osMesaProcAddress(const char* name) { return osMesaLibrary().getProcAddress(name); }
 
+/// The context asked for: OpenGL 3.3 core, or what STOA_GL_CONTEXT names,
+/// "MAJOR.MINOR" with "-forward" for a forward-compatible one ("4.1-forward" is
+/// what macOS gives, to try the labs' shaders there without a Mac).
+struct ContextRequest {
+    int major = 3;
+    int minor = 3;
+    bool forwardCompatible = false;
+    std::string text() const {
+        return std::to_string(major) + "." + std::to_string(minor) + " core" + (forwardCompatible ? ", forward-compatible" : "");
+    }
+};
+
+ContextRequest contextRequest() {
+    ContextRequest request;
+    const char* chosen = std::getenv("STOA_GL_CONTEXT");
+    if (!chosen || !*chosen) return request;
+    std::string text = chosen;
+    const std::string forward = "-forward";
+    if (text.size() > forward.size() && text.compare(text.size() - forward.size(), forward.size(), forward) == 0) {
+        request.forwardCompatible = true;
+        text.resize(text.size() - forward.size());
+    }
+    const bool valid = text.size() == 3 && text[0] >= '3' && text[0] <= '4' && text[1] == '.' && text[2] >= '0' && text[2] <= '6';
+    if (!valid || (text[0] == '3' && text[2] < '2'))
+        throw std::runtime_error("STOA_GL_CONTEXT='" + std::string(chosen) +
+                                 "': expected a core version from 3.2 to 4.6, such as 3.3 or 4.1, with -forward for a "
+                                 "forward-compatible context (4.1-forward is what macOS gives)");
+    request.major = text[0] - '0';
+    request.minor = text[2] - '0';
+    return request;
+}
+
 [[noreturn]] void failOsMesa(const std::string& what) {
     throw std::runtime_error("HeadlessContext (osmesa): " + what +
                              ". Install Mesa's OSMesa (Debian/Ubuntu: libosmesa6, Fedora: mesa-libOSMesa); "
@@ -109,15 +141,17 @@ public:
     OsMesaState() {
         const OsMesaLibrary& library = osMesaLibrary();
         if (!library.handle) failOsMesa(library.problem);
+        const ContextRequest request = contextRequest();
+        if (request.forwardCompatible) failOsMesa("OSMesa makes no forward-compatible context; use STOA_HEADLESS=egl");
         const int attributes[] = {kOsMesaFormat, GL_RGBA,
                                   kOsMesaDepthBits, 24,
                                   kOsMesaStencilBits, 8,
                                   kOsMesaProfile, kOsMesaCoreProfile,
-                                  kOsMesaContextMajorVersion, 3,
-                                  kOsMesaContextMinorVersion, 3,
+                                  kOsMesaContextMajorVersion, request.major,
+                                  kOsMesaContextMinorVersion, request.minor,
                                   0};
         m_context = library.createContextAttribs(attributes, nullptr);
-        if (!m_context) failOsMesa("OSMesaCreateContextAttribs() refused an OpenGL 3.3 core context");
+        if (!m_context) failOsMesa("OSMesaCreateContextAttribs() refused an OpenGL " + request.text() + " context");
         // OSMesa draws its default framebuffer into client memory; nothing is
         // drawn there (Framebuffer objects take the rendering), so 1x1 will do.
         if (!library.makeCurrent(m_context, m_pixels, GL_UNSIGNED_BYTE, 1, 1)) {
@@ -241,12 +275,15 @@ private:
                 failEgl("eglChooseConfig() for an OpenGL config");
             config = EGL_NO_CONFIG_KHR;
         }
-        const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3,
-                                            EGL_CONTEXT_MINOR_VERSION, 3,
+        const ContextRequest request = contextRequest();
+        const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION, request.major,
+                                            EGL_CONTEXT_MINOR_VERSION, request.minor,
                                             EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                            EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE,
+                                            request.forwardCompatible ? EGL_TRUE : EGL_FALSE,
                                             EGL_NONE};
         m_context = eglCreateContext(m_display, config, EGL_NO_CONTEXT, contextAttributes);
-        if (m_context == EGL_NO_CONTEXT) failEgl("eglCreateContext() for OpenGL 3.3 core");
+        if (m_context == EGL_NO_CONTEXT) failEgl("eglCreateContext() for OpenGL " + request.text());
         if (!eglMakeCurrent(m_display, EGL_NO_SURFACE, EGL_NO_SURFACE, m_context)) {
             eglDestroyContext(m_display, m_context);
             failEgl("eglMakeCurrent() without a surface (EGL_KHR_surfaceless_context)");
