@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
-# Installs what Stoa needs to build, render headless, run the window under Xvfb,
-# run the tests and build the docs. Debian 12 and Ubuntu 22.04 or newer: apt-get
-# (through sudo when not root). macOS and Windows: prints the Homebrew and vcpkg
-# steps (nothing is installed); other systems: the packages to look for.
+# Installs what Stoa needs to build, render headless, run the window (under Xvfb,
+# or in a browser through tools/web-window.sh), grade and build the docs.
+#   .ci/install-deps.sh           what a student or an instructor needs
+#   .ci/install-deps.sh --tests   and what the project's own tests use besides
+#                                 (clang, Chromium, MinGW-w64 and Wine): CI's set
+# Debian 12 and Ubuntu 22.04 or newer: apt-get (through sudo when not root).
+# macOS and Windows: prints the Homebrew and vcpkg steps (nothing is installed);
+# other systems: the packages to look for.
 set -euo pipefail
 
 packages=(
@@ -11,10 +15,19 @@ packages=(
   nlohmann-json3-dev libopenal-dev libvorbis-dev libogg-dev
   libosmesa6-dev libegl-dev libgl1-mesa-dri
   catch2 xvfb xauth xdotool mkdocs python3-pymdownx python3-pygments libjs-mathjax
-  clang x11vnc websockify novnc chromium
+  x11vnc websockify novnc
   zip unzip python3 similarity-tester
-  g++-mingw-w64-x86-64-posix wine64   # stoa_core built for Windows, its tests run under Wine: tests/windows/
 )
+test_packages=(
+  clang                                 # the second compiler's build (.ci/test-all.sh)
+  chromium                              # the browser tests (the window through noVNC, the class report)
+  g++-mingw-w64-x86-64-posix wine64     # stoa_core built for Windows, its tests run under Wine: tests/windows/
+)
+case "${1:-}" in
+  "") ;;
+  --tests) packages+=("${test_packages[@]}") ;;
+  *) echo "install-deps: unknown option '$1' (usage: .ci/install-deps.sh [--tests])" >&2; exit 2 ;;
+esac
 
 # Other systems: the same libraries from vcpkg (vcpkg.json, through
 # CMakePresets.json), and the build tools from the system's own manager.
