@@ -32,6 +32,7 @@ h3 { font-size: 1.05em; margin: 0.8em 0 0.2em; }
 table { border-collapse: collapse; margin: 0.4em 0; }
 td, th { border-bottom: 1px solid var(--line); padding: 0.2em 0.7em 0.2em 0; text-align: left; vertical-align: top; }
 td.num, th.num { text-align: right; white-space: nowrap; }
+td.who { width: 36%; }
 .kind { display: inline-block; border-radius: 4px; padding: 0 0.45em; font-size: 0.8em; font-weight: 600;
         color: #fff; background: #757575; }
 .kind.mistake { background: #b26a00; } .kind.case { background: #c62828; } .kind.check { background: #6a1b9a; }
@@ -180,7 +181,7 @@ void Page::teachAgain() {
         if (!point.text.empty()) m_html << "<br><span class=\"muted\">" << escape(point.text) << "</span>";
         if (!point.docs.empty()) m_html << " <code>" << escape(point.docs) << "</code>";
         m_html << "</td><td><a href=\"#lab-" << escape(urlPath(point.lab)) << "\">" << escape(point.lab)
-               << "</a></td><td>" << studentList(point.students) << "</td></tr>";
+               << "</a></td><td class=\"who\">" << studentList(point.students) << "</td></tr>";
     }
     m_html << "</table>";
     needsALook();
@@ -240,7 +241,7 @@ void Page::problems(const LabSummary& lab) {
             for (const std::string& name : mistake.cases) cases += (cases.empty() ? "" : ", ") + name;
             m_html << "<tr><td class=\"num\">" << mistake.students.size() << "</td><td><b>" << escape(mistake.name)
                    << "</b> <span class=\"muted\">(on " << escape(cases) << ")</span><br>" << escape(mistake.hint)
-                   << "</td><td>" << studentList(mistake.students) << "</td></tr>";
+                   << "</td><td class=\"who\">" << studentList(mistake.students) << "</td></tr>";
         }
         m_html << "</table>";
     }
