@@ -276,11 +276,13 @@ private:
             config = EGL_NO_CONFIG_KHR;
         }
         const ContextRequest request = contextRequest();
+        // The forward-compatible attribute is EGL 1.5's: named only when asked for,
+        // so that the default request stays what an EGL 1.4 takes.
         const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION, request.major,
                                             EGL_CONTEXT_MINOR_VERSION, request.minor,
                                             EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                            EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE,
-                                            request.forwardCompatible ? EGL_TRUE : EGL_FALSE,
+                                            request.forwardCompatible ? EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE : EGL_NONE,
+                                            EGL_TRUE,
                                             EGL_NONE};
         m_context = eglCreateContext(m_display, config, EGL_NO_CONTEXT, contextAttributes);
         if (m_context == EGL_NO_CONTEXT) failEgl("eglCreateContext() for OpenGL " + request.text());
