@@ -38,6 +38,12 @@ mkdir -p "$work/course/dora/02_notes" "$work/course/ed/02_notes"
 fmt -w 60 "$course/students/ann/02_notes/notes.txt" > "$work/course/dora/02_notes/notes.txt"
 fmt -w 120 "$course/students/ben/02_notes/notes.txt" > "$work/course/ed/02_notes/notes.txt"
 STOA_SOURCE_DIR=$course "$grade_class" "$work/course" --out "$work/course-out" --similarity-only
+# Without SIM on the PATH: exit status 1 and the line saying what to install.
+set +e
+PATH=/nonexistent STOA_SOURCE_DIR=$course "$grade_class" "$work/course" --out "$work/no-sim" --similarity-only \
+    > /dev/null 2> "$work/no-sim.err"
+no_sim_status=$?
+set -e
 
 # This tree's first lab.
 lab=$(cd "$source/labs" && ls -d [0-9][0-9]_* | head -1)
@@ -52,13 +58,16 @@ if [ -d "$source/solutions" ]; then
   "$grade_class" "$work/tree" --out "$work/tree-out" --similarity-only --lab "$lab"
 fi
 
-python3 - "$work" "$lab" <<'PY'
+python3 - "$work" "$lab" "$no_sim_status" <<'PY'
 import json, os, sys
-work, lab = sys.argv[1:3]
+work, lab, no_sim_status = sys.argv[1], sys.argv[2], int(sys.argv[3])
 failures = []
 def check(condition, message):
     if not condition:
         failures.append(message)
+no_sim = open(os.path.join(work, "no-sim.err")).read()
+check(no_sim_status == 1 and "apt-get install similarity-tester" in no_sim,
+      f"without SIM: status {no_sim_status}, {no_sim!r}")
 def ranking(out, lab_name):
     report = json.load(open(os.path.join(out, "similarity.json")))
     found = [entry for entry in report["labs"] if entry["lab"] == lab_name]

@@ -54,7 +54,7 @@ LabCases labA() {
     LabCases lab;
     lab.lab = "01_a";
     lab.maxPoints = 4;
-    lab.order = {"front", "check_bound"};
+    lab.order = {"front", "check_bound", "hidden_side"};   // no student has hidden_side: it is left out
     lab.descriptions["front"] = "The view from the front";
     lab.checks.insert("check_bound");
     return lab;

@@ -390,20 +390,24 @@ void writeClassPages(const ClassOptions& options, const Framework& framework, co
 }
 
 // --similarity: the staged copies of the submissions compared lab by lab.
-void compareStaged(const std::vector<StagedSubmission>& staged, const ClassOptions& options,
-                   const Framework& framework, std::ostream& out, std::ostream& err) {
+// Returns 0 when the report was written, 1 when it could not be (SIM missing).
+int compareStaged(const std::vector<StagedSubmission>& staged, const ClassOptions& options,
+                  const Framework& framework, std::ostream& out, std::ostream& err) {
     std::map<std::string, std::filesystem::path> submissions;
     for (const StagedSubmission& submission : staged)
         if (!submission.labsDir.empty()) submissions[submission.submission.student] = submission.labsDir;
     out << "comparing " << submissions.size() << " submissions for similarity..." << std::endl;
     auto start = std::chrono::steady_clock::now();
     try {
-        writeSimilarityReport(submissions, framework.sourceDir, framework.labs, options.outDir, SimilarityOptions{},
-                              out, err);
+        if (writeSimilarityReport(submissions, framework.sourceDir, framework.labs, options.outDir,
+                                  SimilarityOptions{}, out, err) != 0)
+            return 1;
         double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         out << "similarity took " << formatPoints(seconds) << " s" << std::endl;
+        return 0;
     } catch (const std::exception& error) {
         err << "stoa-grade-class: no similarity report: " << error.what() << "\n";
+        return 1;
     }
 }
 
@@ -432,10 +436,7 @@ int runClassGrade(const ClassOptions& options, const Framework& framework, std::
     std::vector<StagedSubmission> staged(total);
     forEachInParallel(total, options.jobs, [&](std::size_t i) { staged[i] = stageForGrading(submissions[i], options); });
     if (std::string note = fileConfinementNote(); !note.empty()) err << "stoa-grade-class: " << note << "\n";
-    if (options.similarityOnly) {
-        compareStaged(staged, options, framework, out, err);
-        return 0;
-    }
+    if (options.similarityOnly) return compareStaged(staged, options, framework, out, err);
 
     std::size_t finished = 0;
     std::vector<StudentGrade> grades(total);
@@ -472,7 +473,7 @@ int runClassGrade(const ClassOptions& options, const Framework& framework, std::
     std::filesystem::path gradebook = options.outDir / "gradebook.csv";
     writeReportFile(gradebook, gradebookCsv(framework.labs, grades), "the gradebook");
     writeClassPages(options, framework, grades, out, err);
-    if (options.similarity) compareStaged(staged, options, framework, out, err);
+    if (options.similarity) compareStaged(staged, options, framework, out, err);   // the grades stand without it
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     out << "wrote " << gradebook.string() << " (" << total << " students, " << static_cast<int>(seconds + 0.5)
         << " s); per student: " << (options.outDir / "STUDENT").string()

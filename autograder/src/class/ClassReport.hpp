@@ -21,6 +21,7 @@
 
 #include <array>
 #include <filesystem>
+#include <iosfwd>
 #include <map>
 #include <set>
 #include <string>
@@ -71,12 +72,6 @@ StudentRecord readStudentResults(const std::filesystem::path& resultsJson, const
 /// from the gradebook's `grade`, cases from <outDir>/<student>/results.json where
 /// it exists and parses. Never throws.
 StudentRecord recordOfGrade(const StudentGrade& grade, const std::filesystem::path& outDir);
-
-/// The summary of this run's grades (summarizeClass() over recordOfGrade() of
-/// each), with the labs' cases from the framework's manifests.
-struct ClassSummary;
-ClassSummary summarizeGrades(const std::vector<StudentGrade>& grades, const Framework& framework,
-                             const std::filesystem::path& outDir);
 
 /// What the report knows of a lab besides the students' results: its cases from
 /// the manifests (public and hidden), in file order.
@@ -164,6 +159,11 @@ struct ClassSummary {
 /// Sums up the class. `labs` names the labs in order with their cases; a lab no
 /// entry names is added from the results, after them.
 ClassSummary summarizeClass(std::vector<StudentRecord> students, std::vector<LabCases> labs, const std::string& source);
+
+/// The summary of this run's grades (summarizeClass() over recordOfGrade() of
+/// each), with the labs' cases from the framework's manifests.
+ClassSummary summarizeGrades(const std::vector<StudentGrade>& grades, const Framework& framework,
+                             const std::filesystem::path& outDir);
 
 /// class.json: the summary's figures (see docs/instructor-guide.md, "The class report").
 std::string classJson(const ClassSummary& summary);

@@ -79,6 +79,9 @@ LabSummary summarizeLab(const LabCases& lab, const std::vector<StudentRecord>& s
     summary.scores = distributionOf(points, maxPoints);
     const int classSize = static_cast<int>(students.size());
     for (const std::string& name : order) {
+        // A case of the manifests that no student's results have: a hidden case
+        // a package without --with-hidden did not grade.
+        if (!cases.count(name)) continue;
         CaseSummary caseSummary = cases[name];
         caseSummary.name = name;
         auto description = lab.descriptions.find(name);

@@ -16,6 +16,7 @@
 // ranks, it does not accuse, and says so.
 
 #include <filesystem>
+#include <iosfwd>
 #include <map>
 #include <string>
 #include <utility>
