@@ -97,8 +97,9 @@ x11vnc -display "$display" -rfbport "$vnc_port" -localhost -forever -shared -nop
 pids+=($!)
 websockify --web "$novnc" "$listen:$port" "127.0.0.1:$vnc_port" > "$dir/websockify.log" 2>&1 &
 pids+=($!)
+ready=0
 for _ in $(seq 1 100); do
-  (exec 3<>"/dev/tcp/127.0.0.1/$vnc_port") 2>/dev/null && (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null && break
+  (exec 3<>"/dev/tcp/127.0.0.1/$vnc_port") 2>/dev/null && (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null && { ready=1; break; }
   for pid in "${pids[@]:1}"; do
     kill -0 "$pid" 2>/dev/null && continue
     echo "web-window.sh: the VNC server or websockify stopped:" >&2
@@ -107,6 +108,14 @@ for _ in $(seq 1 100); do
   done
   sleep 0.1
 done
+if [ "$ready" -ne 1 ] && [ "$listen" != 127.0.0.1 ] && [ "$listen" != 0.0.0.0 ]; then
+  ready=1   # served on another address only: this machine's loopback cannot tell
+fi
+if [ "$ready" -ne 1 ]; then
+  echo "web-window.sh: the VNC server (port $vnc_port) or the page (port $port) did not answer within 10 s:" >&2
+  cat "$dir/x11vnc.log" "$dir/websockify.log" >&2
+  exit 1
+fi
 
 echo "web-window.sh: open http://localhost:$port/vnc.html?autoconnect=true&resize=scale in a browser" >&2
 echo "web-window.sh: (display $display; Ctrl+C here stops it)" >&2
