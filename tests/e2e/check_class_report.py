@@ -9,9 +9,9 @@ import csv
 import json
 import os
 import statistics
-import struct
 import sys
-import zlib
+
+from png_file import pixel, read_png
 
 BAR = (0x3A, 0x6F, 0xB0)   # the histogram bars' colour (ClassReportHtml.cpp, --bar)
 failures = []
@@ -71,47 +71,6 @@ def check_against_gradebook(out):
     return report, rows
 
 
-def png_pixels(path):
-    """(width, height, rows of RGB tuples) of an 8-bit RGB or RGBA PNG, as Chromium writes it."""
-    data = open(path, "rb").read()
-    assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
-    at, chunks, header = 8, [], None
-    while at < len(data):
-        length, kind = struct.unpack(">I4s", data[at:at + 8])
-        body = data[at + 8:at + 8 + length]
-        if kind == b"IHDR":
-            header = struct.unpack(">IIBBBBB", body)
-        elif kind == b"IDAT":
-            chunks.append(body)
-        at += 12 + length
-    width, height, depth, colour, _, _, interlace = header
-    assert depth == 8 and colour in (2, 6) and interlace == 0, f"unexpected PNG format {header}"
-    channels = 3 if colour == 2 else 4
-    raw = zlib.decompress(b"".join(chunks))
-    stride = width * channels
-    rows, previous = [], bytearray(stride)
-    for y in range(height):
-        kind = raw[y * (stride + 1)]
-        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for x in range(stride):
-            left = line[x - channels] if x >= channels else 0
-            up = previous[x]
-            corner = previous[x - channels] if x >= channels else 0
-            if kind == 1:
-                line[x] = (line[x] + left) & 255
-            elif kind == 2:
-                line[x] = (line[x] + up) & 255
-            elif kind == 3:
-                line[x] = (line[x] + (left + up) // 2) & 255
-            elif kind == 4:
-                p = left + up - corner
-                pa, pb, pc = abs(p - left), abs(p - up), abs(p - corner)
-                line[x] = (line[x] + (left if pa <= pb and pa <= pc else up if pb <= pc else corner)) & 255
-        rows.append([tuple(line[x:x + 3]) for x in range(0, stride, channels)])
-        previous = line
-    return width, height, rows
-
-
 def main():
     work, lab, mistake, missing_status = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
     out = os.path.join(work, "out")
@@ -139,8 +98,10 @@ def main():
 
     screenshot = os.path.join(work, "class.png")
     if os.path.exists(screenshot):
-        width, height, pixels = png_pixels(screenshot)
-        bar = sum(1 for row in pixels for pixel in row if all(abs(a - b) <= 6 for a, b in zip(pixel, BAR)))
+        image = read_png(screenshot)
+        width, height = image[0], image[1]
+        bar = sum(1 for y in range(height) for x in range(width)
+                  if all(abs(a - b) <= 6 for a, b in zip(pixel(image, x, y), BAR)))
         print(f"screenshot {width}x{height}: {bar} pixels of the histograms' bars")
         check((width, height) == (1280, 900), f"screenshot size {width}x{height}")
         check(bar >= 1500, f"the screenshot's first screen shows {bar} pixels of histogram bars, expected a histogram")

@@ -4,55 +4,11 @@
 The window before and after F1: where LabApp puts the UI panel (10, 10, 280 x
 120 pixels) ImGui's dark style draws a blue title bar and light text, which
 the frame before F1 does not have there, and elsewhere the frame must be the same. Reads the 8-bit RGBA PNGs that
-Image::savePng writes, with the standard library alone.
+Image::savePng writes (png_file.py).
 """
-import struct
 import sys
-import zlib
 
-
-def read_png(path):
-    data = open(path, "rb").read()
-    assert data[:8] == b"\x89PNG\r\n\x1a\n", f"{path}: not a PNG"
-    offset, idat = 8, b""
-    while offset < len(data):
-        length, kind = struct.unpack(">I4s", data[offset:offset + 8])
-        body = data[offset + 8:offset + 8 + length]
-        if kind == b"IHDR":
-            width, height, depth, colour = struct.unpack(">IIBB", body[:10])
-            assert depth == 8 and colour in (2, 6), f"{path}: expected 8-bit RGB or RGBA"
-            channels = 4 if colour == 6 else 3
-        elif kind == b"IDAT":
-            idat += body
-        offset += 12 + length
-    raw = zlib.decompress(idat)
-    stride = width * channels
-    rows, previous = [], bytearray(stride)
-    for y in range(height):
-        start = y * (stride + 1)
-        kind, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
-        for x in range(stride):
-            a = line[x - channels] if x >= channels else 0
-            b = previous[x]
-            c = previous[x - channels] if x >= channels else 0
-            if kind == 1:
-                line[x] = (line[x] + a) & 255
-            elif kind == 2:
-                line[x] = (line[x] + b) & 255
-            elif kind == 3:
-                line[x] = (line[x] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(line)
-        previous = line
-    return width, height, channels, rows
-
-
-def pixel(image, x, y):
-    _, _, channels, rows = image
-    return tuple(rows[y][x * channels:x * channels + 3])
+from png_file import pixel, read_png
 
 
 def changed_fraction(before, after, x0, y0, x1, y1, step=3):
