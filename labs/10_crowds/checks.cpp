@@ -86,9 +86,78 @@ stoa::CheckResult heightsAtTexelCentresBody() {
             }
         }
     }
-    return stoa::CheckResult::pass("heightAt() is each texel's height at its centre and the mean of four between them (" +
+    // Beyond the outermost centres, and outside the footprint, the edge's values hold
+    // (the clamp). A guard row past the map's last row (values no sample has) shows a
+    // read past the map: the field's grid still says 6 rows.
+    for (int col = 0; col < field.grid.width; ++col) field.values.push_back(5.0f);
+    const int lastCol = field.grid.width - 1, lastRow = field.grid.height - 1;
+    for (const float beyond : {0.3f, 1.5f, 40.0f}) {   // in texels past the edge
+        for (int col = 0; col <= lastCol; col += lastCol) {
+            for (int row = 0; row <= lastRow; row += lastRow) {
+                const glm::vec2 outward(col == 0 ? -1.0f : 1.0f, row == 0 ? -1.0f : 1.0f);
+                const glm::vec2 corner(col == 0 ? field.grid.footprintMin.x : field.grid.footprintMax.x,
+                                       row == 0 ? field.grid.footprintMin.y : field.grid.footprintMax.y);
+                const glm::vec2 at = corner + outward * beyond * cell;
+                const float height = stoa::heightAt(field, at);
+                if (std::fabs(height - metres(col, row)) > 1e-4f) {
+                    return stoa::CheckResult::fail(
+                        "heightAt() at " + describe(at) + ", " + std::to_string(beyond) +
+                        " texels outside the footprint's corner, is " + std::to_string(height) +
+                        " m; the corner texel (" + std::to_string(col) + ", " + std::to_string(row) + ") is " +
+                        std::to_string(metres(col, row)) + " m (clamp to [0, w - 1] x [0, h - 1]: outside the "
+                        "footprint the edge's values hold, and no read may pass the last row or column)");
+                }
+            }
+        }
+    }
+    return stoa::CheckResult::pass("heightAt() is each texel's height at its centre, the mean of four between them (" +
                                    std::to_string(field.grid.width * field.grid.height) + " centres, " +
-                                   std::to_string((field.grid.width - 1) * (field.grid.height - 1)) + " midpoints)");
+                                   std::to_string((field.grid.width - 1) * (field.grid.height - 1)) +
+                                   " midpoints), and the corner's height outside the footprint");
+}
+
+stoa::CheckResult walkableAtTexelsBody() {
+    // A map that is not square, with texels that are not square either, over a
+    // footprint away from the origin: rows and columns must not be confused.
+    Lcg random;
+    stoa::CollisionMap map;
+    map.grid.width = 7;
+    map.grid.height = 4;
+    map.grid.footprintMin = glm::vec2(-5.0f, 2.0f);
+    map.grid.footprintMax = glm::vec2(9.0f, 14.0f);   // texels 2 m by 3 m
+    for (int i = 0; i < map.grid.width * map.grid.height; ++i) map.walkable.push_back(random.next() < 0.5f ? 0 : 255);
+    const glm::vec2 cell = (map.grid.footprintMax - map.grid.footprintMin) / glm::vec2(map.grid.width, map.grid.height);
+    for (int row = 0; row < map.grid.height; ++row) {
+        for (int col = 0; col < map.grid.width; ++col) {
+            const bool white = map.walkable[static_cast<std::size_t>(row * map.grid.width + col)] != 0;
+            // The texel's centre and two points just inside its near and far corners.
+            for (const glm::vec2 within : {glm::vec2(0.5f), glm::vec2(0.02f), glm::vec2(0.98f)}) {
+                const glm::vec2 at = map.grid.footprintMin + (glm::vec2(col, row) + within) * cell;
+                if (stoa::walkableAt(map, at) != white) {
+                    return stoa::CheckResult::fail(
+                        "walkableAt() at " + describe(at) + ", in texel (" + std::to_string(col) + ", " +
+                        std::to_string(row) + ") of a 7 x 4 map, says " + (white ? "no" : "yes") +
+                        "; that texel is " + (white ? "white" : "black") +
+                        " (col from x and the width, row from z and the height)");
+                }
+            }
+        }
+    }
+    // Outside every edge, including the far ones, nothing is walkable.
+    for (const float t : {0.1f, 0.5f, 0.9f}) {
+        const glm::vec2 along = map.grid.footprintMin + t * (map.grid.footprintMax - map.grid.footprintMin);
+        const glm::vec2 outside[] = {{map.grid.footprintMin.x - 0.01f, along.y}, {map.grid.footprintMax.x, along.y},
+                                     {along.x, map.grid.footprintMin.y - 0.01f}, {along.x, map.grid.footprintMax.y}};
+        for (const glm::vec2 at : outside) {
+            if (stoa::walkableAt(map, at)) {
+                return stoa::CheckResult::fail("walkableAt() at " + describe(at) +
+                                               ", on or outside the footprint's edge, says yes; "
+                                               "nothing outside the map is walkable, nor its far edges");
+            }
+        }
+    }
+    return stoa::CheckResult::pass("walkableAt() reads the texel that holds each point of a 7 x 4 map (84 points) "
+                                   "and refuses 12 points on or outside its edges");
 }
 
 stoa::CheckResult blendedNormalsUnitBody() {
@@ -142,6 +211,10 @@ stoa::CheckResult blendedNormalsUnitBody() {
 
 stoa::CheckResult checkHeightsAtTexelCentres() {
     return pointingToDocs(heightsAtTexelCentresBody(), "Bilinear height");
+}
+
+stoa::CheckResult checkWalkableAtTexels() {
+    return pointingToDocs(walkableAtTexelsBody(), "From a point to a texel");
 }
 
 stoa::CheckResult checkBlendedNormalsUnit() { return pointingToDocs(blendedNormalsUnitBody(), "Blending two frames"); }

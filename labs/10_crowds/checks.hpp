@@ -9,8 +9,14 @@ namespace lab10 {
 /// heights_at_texel_centres: the height map's values are samples at the texel
 /// centres, so heightAt() at a texel's centre is that texel's height exactly,
 /// and halfway between four neighbouring centres it is their mean. Tried on a
-/// field of random values over a footprint that does not start at the origin.
+/// field of random values over a footprint that does not start at the origin;
+/// outside the footprint, each corner's height holds (the clamp).
 stoa::CheckResult checkHeightsAtTexelCentres();
+
+/// walkable_at_texels: walkableAt() reads the texel that holds the point, on a
+/// map that is not square (rows and columns apart), and nothing on or past the
+/// footprint's edges is walkable.
+stoa::CheckResult checkWalkableAtTexels();
 
 /// blended_normals_unit: blendMd2Frames() gives unit normals for every t
 /// between the frames (two unit normals blended are shorter than one), the

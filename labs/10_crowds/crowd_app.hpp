@@ -170,6 +170,7 @@ public:
 
     CheckResult runCheck(const CaseSpec& spec) override {
         if (spec.check == "heights_at_texel_centres") return lab10::checkHeightsAtTexelCentres();
+        if (spec.check == "walkable_at_texels") return lab10::checkWalkableAtTexels();
         if (spec.check == "blended_normals_unit") return lab10::checkBlendedNormalsUnit();
         return Lab::runCheck(spec);
     }
