@@ -9,6 +9,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
+#include <cstdint>
 #include <string>
 
 namespace lab06 {
@@ -50,6 +52,97 @@ stoa::CheckResult checkSphereTurnedAboutX() {
                                        "(docs: A sphere in world space)");
     return stoa::CheckResult::pass("a sphere stretched along Y and turned about X still holds every point of the "
                                    "object's sphere, and is no larger than the longest column says");
+}
+
+namespace {
+
+// Numbers in [0, 1) from a fixed seed: the same points every run.
+struct Lcg {
+    std::uint32_t state = 20261129u;
+    float next() {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) / 16777216.0f;
+    }
+};
+
+const char* const kSideNames[6] = {"left", "right", "bottom", "top", "near", "far"};
+
+// How far inside side `side` of the clip volume the normalized device point is
+// (positive inside): x >= -1 is the left side, x <= 1 the right, and so on.
+float insideBy(const glm::vec3& ndc, int side) {
+    const float coordinate = ndc[side / 2];
+    return side % 2 == 0 ? coordinate + 1.0f : 1.0f - coordinate;
+}
+
+} // namespace
+
+stoa::CheckResult checkPlanesBoundClipSpace() {
+    // A camera looking down and sideways from off the origin, with a wide aspect.
+    const glm::mat4 projection = glm::perspective(glm::radians(55.0f), 1.7f, 0.4f, 60.0f);
+    const glm::mat4 view = glm::lookAt(glm::vec3(3.0f, 5.0f, 9.0f), glm::vec3(-2.0f, 0.5f, -4.0f),
+                                       glm::vec3(0.0f, 1.0f, 0.0f));
+    const glm::mat4 viewProjection = projection * view;
+    const glm::mat4 back = glm::inverse(viewProjection);
+    const stoa::Frustum frustum = stoa::frustumPlanes(viewProjection);
+    for (int side = 0; side < 6; ++side) {
+        const float length = glm::length(frustum.planes[side].normal);
+        if (std::fabs(length - 1.0f) > 1e-3f)
+            return stoa::CheckResult::fail("frustumPlanes(): the " + std::string(kSideNames[side]) + " plane's normal is " +
+                                           stoa::checkNumber(length, 3) + " long; divide n and d by |n| "
+                                           "(docs: The frustum's planes)");
+    }
+    // Points in and around the clip volume, carried back to the world: each
+    // plane must say inside exactly where its side of the volume does.
+    Lcg random;
+    int tried = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const glm::vec3 ndc(2.6f * random.next() - 1.3f, 2.6f * random.next() - 1.3f, 2.2f * random.next() - 1.1f);
+        const glm::vec4 carried = back * glm::vec4(ndc, 1.0f);
+        if (carried.w <= 0.0f) continue;   // z past the limit of depth: a point behind the eye
+        const glm::vec3 world = glm::vec3(carried) / carried.w;
+        for (int side = 0; side < 6; ++side) {
+            const float expected = insideBy(ndc, side);
+            if (std::fabs(expected) < 0.02f) continue;   // too close to the side to judge in floats
+            ++tried;
+            const stoa::Plane& plane = frustum.planes[side];
+            const float distance = glm::dot(plane.normal, world) + plane.d;
+            if ((distance >= 0.0f) != (expected > 0.0f))
+                return stoa::CheckResult::fail(
+                    "frustumPlanes(): the point " + stoa::checkVector(world) + " is " +
+                    (expected > 0.0f ? "inside" : "outside") + " the " + kSideNames[side] +
+                    " side of the view volume, but the " + kSideNames[side] + " plane puts it " +
+                    (expected > 0.0f ? "outside" : "inside") + " (distance " + stoa::checkNumber(distance, 3) +
+                    "). Each plane is row 3 plus or minus one other row of projection * view, in the order "
+                    "left, right, bottom, top, near, far (docs: The frustum's planes)");
+        }
+    }
+    return stoa::CheckResult::pass("frustumPlanes() of a camera looking down and sideways: six unit normals, and each "
+                                   "plane agrees with its side of the view volume on " + std::to_string(tried) +
+                                   " points in and around it");
+}
+
+stoa::CheckResult checkLevelsOfDetail() {
+    struct Expected {
+        float quality;
+        int levels;
+        int level;
+    };
+    // The page's table for four levels, its ends, and other level counts.
+    const Expected table[] = {{1.0f, 4, 0},  {0.76f, 4, 0}, {0.75f, 4, 1}, {0.5f, 4, 2},  {0.26f, 4, 2},
+                              {0.25f, 4, 3}, {1e-6f, 4, 3}, {0.0f, 4, -1}, {-0.5f, 4, -1}, {1.0f, 1, 0},
+                              {0.01f, 1, 0}, {0.0f, 1, -1}, {0.5f, 5, 2},  {0.59f, 5, 2}, {0.01f, 7, 6}};
+    for (const Expected& row : table) {
+        const int level = stoa::levelOfDetail(row.quality, row.levels);
+        if (level != row.level)
+            return stoa::CheckResult::fail("levelOfDetail(" + stoa::checkNumber(row.quality, 6) + ", " +
+                                           std::to_string(row.levels) + ") is " + std::to_string(level) + ", expected " +
+                                           std::to_string(row.level) +
+                                           (row.level < 0 ? " (not drawn: -1 whenever q <= 0)"
+                                                          : " (min(floor((1 - q) n), n - 1))") +
+                                           " (docs: Level of detail)");
+    }
+    return stoa::CheckResult::pass("levelOfDetail() gives the page's levels for 15 qualities and level counts, "
+                                   "-1 for q <= 0");
 }
 
 } // namespace lab06

@@ -13,4 +13,14 @@ namespace lab06 {
 /// the model matrix says (docs: "A sphere in world space").
 stoa::CheckResult checkSphereTurnedAboutX();
 
+/// planes_bound_clip_space: frustumPlanes() of a camera that looks down and
+/// sideways gives six unit normals, and each plane, in the order left, right,
+/// bottom, top, near, far, says inside exactly where its side of the clip volume
+/// does, for points in and around the volume (docs: "The frustum's planes").
+stoa::CheckResult checkPlanesBoundClipSpace();
+
+/// levels_of_detail: levelOfDetail(q, n) on the page's table for four levels,
+/// its ends and other level counts; -1 for q <= 0 (docs: "Level of detail").
+stoa::CheckResult checkLevelsOfDetail();
+
 } // namespace lab06

@@ -205,6 +205,8 @@ public:
 
     stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
         if (spec.check == "sphere_turned_about_x") return lab06::checkSphereTurnedAboutX();
+        if (spec.check == "planes_bound_clip_space") return lab06::checkPlanesBoundClipSpace();
+        if (spec.check == "levels_of_detail") return lab06::checkLevelsOfDetail();
         return Lab::runCheck(spec);
     }
 
