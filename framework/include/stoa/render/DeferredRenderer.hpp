@@ -46,10 +46,18 @@ namespace stoa {
 
 class Camera;
 class ObjectUniforms;
+class TileLightBinner;
 class Program;
 class Texture2D;
 
 enum class LightingMode { Forward, Volumes, Tiled };
+
+/// Who sorts the lights into tiles in the tiled mode. Student: the student's
+/// buildTileLightLists() through the student-code table (what a lab's program
+/// draws, and so what it grades). Framework: the framework's own assignment,
+/// which gives the same lists, in the same order, much faster (the editor and
+/// the showcase, whose frames must not wait for it; docs/framework.md).
+enum class TileListSource { Student, Framework };
 
 /// What render() shows: the lit picture, a channel of the G-buffer, or a heat map.
 enum class DeferredView {
@@ -94,6 +102,7 @@ struct DeferredSettings {
     DeferredView view = DeferredView::Final;
     float cutoff = 1.0f / 64.0f;   // where a light's brightest channel counts as gone (lighting.glsl)
     int tileSize = 16;             // pixels
+    TileListSource tileLists = TileListSource::Student;
     float shininess = 24.0f;       // the Blinn-Phong exponent of every surface
     float heatScale = 64.0f;       // the light count the heat maps show as white
     /// Lab 09: the ambient occlusion, one value per pixel in .r, multiplying
@@ -165,7 +174,7 @@ private:
     void drawVolumes(const std::vector<PointLight>& lights, const DeferredSettings& settings, bool countOnly);
     void drawTiled(const std::vector<PointLight>& lights, const SceneLighting& lighting, const DeferredSettings& settings,
                    bool countOnly);
-    std::vector<DepthRange> tileDepthRanges(const TileGrid& grid) const;
+    const std::vector<DepthRange>& tileDepthRanges(const TileGrid& grid);
     void uploadLights(const std::vector<PointLight>& lights, const std::vector<float>& reaches);
 
     DeferredPrograms m_programs;
@@ -181,6 +190,8 @@ private:
     BufferTexture m_tileLights;
     TextureOverlay m_overlay;
     TileLightLists m_tiles;
+    std::unique_ptr<TileLightBinner> m_binner;   // the tiles' depths, and the framework's lists
+    std::vector<float> m_depthPixels;            // the G-buffer's depth read back, kept between frames
     DeferredStats m_stats;
     glm::mat4 m_view{1.0f}, m_projection{1.0f};
     float m_near = 0.1f;

@@ -1,0 +1,67 @@
+#pragma once
+// The framework's own tile assignment of point lights (private to libstoa: no
+// public header names it, and it has another shape than any function a
+// student writes). DeferredRenderer uses it where DeferredSettings::tileLists
+// is TileListSource::Framework (the editor and the showcase, through
+// CourseRenderer); a lab's own program keeps the student's function.
+//
+// What it computes is fixed by the pictures it must not change: the same
+// per-tile lists, in the same order (lights in increasing index), as the
+// reference assignment of docs/labs/08_deferred.md ("Tiled shading", "Depth
+// bounds"): a light's screen rectangle from the eight corners of the box
+// around its sphere, and a tile kept where the sphere's span of distances
+// meets the tile's depths. tests/labs/TileLightBinnerTests.cpp compares the
+// two on random scenes. How it gets there differs, for speed: the depths are
+// kept as two flat arrays, each light marks one bit per tile it reaches (one
+// 64-bit word holds 64 lights), and each tile's list is read off its bits in
+// order, so that every entry is written once, in sequence. How fast:
+// tests/benchmarks/light_assignment_benchmark.cpp.
+
+#include <stoa/render/DeferredShading.hpp>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace stoa {
+
+class TileLightBinner {
+public:
+    /// Each tile's depth range (distances in front of the camera, metres)
+    /// from `windowDepth`, the depth buffer's values in [0, 1] of a
+    /// `size.x` x `size.y` picture, rows from the bottom; 1 is sky. The
+    /// values equal those of a per-pixel conversion then min/max: the
+    /// conversion is monotonic, so it is applied to each tile's extremes only.
+    /// The result stays valid until the next call.
+    const std::vector<DepthRange>& depthRanges(const float* windowDepth, glm::ivec2 size, const glm::mat4& projection,
+                                               const TileGrid& grid);
+
+    /// Fills `out` (its buffers are reused from frame to frame) with every
+    /// tile's lights: those of `spheres` (view space) whose screen rectangle
+    /// under `projection` covers the tile and whose span of distances meets
+    /// `depths[tile]`; `near` is the projection's near plane (metres).
+    void assign(const std::vector<LightSphere>& spheres, const glm::mat4& projection, float near, const TileGrid& grid,
+                const std::vector<DepthRange>& depths, TileLightLists& out);
+
+private:
+    // A light's tiles, both ends included, and its span of distances.
+    struct Footprint {
+        int columnFirst = 0, columnLast = -1, rowFirst = 0, rowLast = -1;
+        float nearest = 0.0f, farthest = 0.0f;
+    };
+
+    Footprint footprint(const LightSphere& sphere, const glm::mat4& projection, float near, const TileGrid& grid) const;
+    void markTiles(const Footprint& light, int index, int columns, int words);
+    void readLists(int tileCount, int words, TileLightLists& out) const;
+
+    std::vector<DepthRange> m_ranges;
+    std::vector<float> m_lowest, m_highest;   // per tile, scratch of depthRanges()
+    std::vector<float> m_tileNearest;         // per tile; NaN where the tile is sky
+    std::vector<float> m_tileFarthest;
+    std::vector<std::uint64_t> m_bits;        // per tile, `words` words: bit i of word w is light 64 w + i
+    std::vector<int> m_counts;                // per tile
+};
+
+} // namespace stoa
