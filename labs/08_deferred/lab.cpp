@@ -22,6 +22,8 @@
 //   heat_scale = n                the count the heat maps show as white, 1..1024 (default 64)
 // In the window: r switches renderer, v the view, p stops and starts the lights.
 
+#include "checks.hpp"
+
 #include <stoa/gl/Program.hpp>
 #include <stoa/lab/CameraRig.hpp>
 #include <stoa/lab/CaseManifest.hpp>
@@ -104,6 +106,13 @@ public:
         std::vector<stoa::PointLight> lights = stoa::wanderingLights(m_lightOptions, m_time);
         if (m_extraLight) lights.push_back(*m_extraLight);
         m_renderer->render(m_scene->items(), lights, m_lighting, m_cameras.active(), size, m_settings);
+    }
+
+    stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
+        if (spec.check == "reach_solves_the_falloff") return lab08::checkReachSolvesTheFalloff();
+        if (spec.check == "tile_ranges_hold_the_sphere") return lab08::checkTileRangesHoldTheSphere();
+        if (spec.check == "tile_lists_match_the_ranges") return lab08::checkTileListsMatchTheRanges();
+        return Lab::runCheck(spec);
     }
 
     stoa::Camera& activeCamera() override { return m_cameras.active(); }

@@ -1,0 +1,213 @@
+// Lab 08's property checks; see checks.hpp. They call your lightReach(),
+// lightTileRange() and buildTileLightLists() on data of their own and test what
+// the page states of them. The tile checks use a camera of their own on a small
+// picture, with lights placed where the graded scenes never put one: at every
+// edge of the picture, half off it, just past the near plane.
+
+#include "checks.hpp"
+#include "lab08.hpp"
+
+#include <stoa/render/DeferredShading.hpp>
+#include <stoa/scene/Light.hpp>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace lab08 {
+
+namespace {
+
+// Numbers in [0, 1) from a fixed seed: the same data every run.
+struct Lcg {
+    std::uint32_t state = 20261129u;
+    float next() {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) / 16777216.0f;
+    }
+    float between(float low, float high) { return low + (high - low) * next(); }
+};
+
+std::string number(float value) { return stoa::checkNumber(value, 4); }
+
+std::string tileName(glm::ivec2 tile) { return "(" + std::to_string(tile.x) + ", " + std::to_string(tile.y) + ")"; }
+
+std::string describe(const stoa::LightSphere& light) {
+    return "the light at " + stoa::checkVector(light.centerView) + " (view space) of reach " + number(light.reach);
+}
+
+bool holds(const stoa::TileRange& range, glm::ivec2 tile) {
+    return tile.x >= range.first.x && tile.x <= range.last.x && tile.y >= range.first.y && tile.y <= range.last.y;
+}
+
+// The small picture the tile checks use: 400 x 270 pixels in tiles of 32, so
+// the last column and row are partly outside it.
+struct TileScene {
+    stoa::TileGrid grid;
+    glm::mat4 projection;
+    float near = 0.5f;
+    TileScene() {
+        grid.viewport = glm::ivec2(400, 270);
+        grid.tileSize = 32;
+        projection = glm::perspective(glm::radians(60.0f), 400.0f / 270.0f, near, 80.0f);
+    }
+};
+
+// Lights whose spheres lie wholly beyond the near plane, their centres anywhere
+// from well inside the picture to a little past each edge.
+std::vector<stoa::LightSphere> lightsAround(const TileScene& scene, Lcg& random, int count) {
+    std::vector<stoa::LightSphere> lights;
+    const glm::mat4 back = glm::inverse(scene.projection);
+    while (static_cast<int>(lights.size()) < count) {
+        stoa::LightSphere light;
+        const float distance = random.between(1.0f, 30.0f);
+        const glm::vec4 direction = back * glm::vec4(random.between(-1.4f, 1.4f), random.between(-1.4f, 1.4f), 0.0f, 1.0f);
+        light.centerView = glm::normalize(glm::vec3(direction) / direction.w) * distance;
+        light.reach = random.between(0.05f, 0.6f) * distance;
+        if (light.centerView.z + light.reach < -scene.near) lights.push_back(light);
+    }
+    return lights;
+}
+
+} // namespace
+
+stoa::CheckResult checkReachSolvesTheFalloff() {
+    struct Row {
+        glm::vec3 color, attenuation;
+        const char* kind;
+    };
+    const Row rows[] = {
+        {{1.0f, 0.6f, 0.2f}, {1.0f, 1.0f, 5.0f}, "quadratic (the wandering lights')"},
+        {{0.3f, 1.6f, 0.9f}, {1.0f, 0.09f, 0.032f}, "quadratic, weak"},
+        {{2.0f, 2.0f, 2.0f}, {0.5f, 0.0f, 0.8f}, "quadratic, no linear term"},
+        {{1.2f, 0.4f, 0.4f}, {1.0f, 0.5f, 0.0f}, "linear only (q = 0)"},
+        {{0.7f, 0.9f, 0.2f}, {1.0f, 2.0f, 0.0f}, "linear only (q = 0)"},
+        {{0.01f, 0.01f, 0.01f}, {1.0f, 1.0f, 1.0f}, "too dim to reach the cut-off"},
+    };
+    const float cutoff = 1.0f / 64.0f;
+    for (const Row& row : rows) {
+        stoa::PointLight light;
+        light.color = row.color;
+        light.attenuation = row.attenuation;
+        const float reach = stoa::lightReach(light, cutoff);
+        const std::string what = "lightReach() of a light " + std::string(row.kind) + " with (c, l, q) = " +
+                                 stoa::checkVector(row.attenuation) + " and colour " + stoa::checkVector(row.color);
+        const float peak = std::max({row.color.r, row.color.g, row.color.b});
+        if (peak / row.attenuation.x <= cutoff) {
+            if (reach != 0.0f)
+                return stoa::CheckResult::fail(what + " is " + number(reach) +
+                                               "; it is never brighter than the cut-off (k >= 0): its reach is 0 "
+                                               "(docs: How far a light reaches)");
+            continue;
+        }
+        const float c = row.attenuation.x, l = row.attenuation.y, q = row.attenuation.z;
+        const float atReach = peak / (c + l * reach + q * reach * reach);
+        if (!std::isfinite(reach) || reach <= 0.0f || std::fabs(atReach - cutoff) > 1e-3f * cutoff)
+            return stoa::CheckResult::fail(what + " is " + number(reach) + " m; there the brightest channel is " +
+                                           number(atReach) + ", not the cut-off " + number(cutoff) +
+                                           ". With q = 0 the equation is a line: R = -k / l "
+                                           "(docs: How far a light reaches)");
+    }
+    stoa::PointLight steady;
+    steady.attenuation = glm::vec3(1.0f, 0.0f, 0.0f);
+    const float everywhere = stoa::lightReach(steady, cutoff);
+    if (!(everywhere >= 1e6f))
+        return stoa::CheckResult::fail("lightReach() of a light with (c, l, q) = (1, 0, 0), which never falls off, is " +
+                                       number(everywhere) + "; it reaches everything: return a very large distance "
+                                       "(docs: How far a light reaches)");
+    return stoa::CheckResult::pass("lightReach() meets the cut-off for quadratic and linear lights, is 0 for a light "
+                                   "too dim and very large for one that never falls off (7 lights)");
+}
+
+stoa::CheckResult checkTileRangesHoldTheSphere() {
+    const TileScene scene;
+    const glm::ivec2 tiles = scene.grid.tiles();
+    Lcg random;
+    int landed = 0;
+    for (const stoa::LightSphere& light : lightsAround(scene, random, 300)) {
+        const stoa::TileRange range = stoa::lightTileRange(light, scene.projection, scene.near, scene.grid);
+        // Points on the sphere and inside it: every tile one lands in must be in the range.
+        for (int i = 0; i < 200; ++i) {
+            const glm::vec3 direction(random.between(-1.0f, 1.0f), random.between(-1.0f, 1.0f), random.between(-1.0f, 1.0f));
+            if (glm::length(direction) < 1e-3f) continue;
+            const float scale = i % 2 == 0 ? 0.999f : random.next();
+            const glm::vec3 point = light.centerView + glm::normalize(direction) * light.reach * scale;
+            const glm::vec4 clip = scene.projection * glm::vec4(point, 1.0f);
+            const glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(scene.grid.viewport);
+            if (pixel.x < 0.0f || pixel.y < 0.0f || pixel.x >= scene.grid.viewport.x || pixel.y >= scene.grid.viewport.y)
+                continue;   // off the picture
+            const glm::ivec2 tile = glm::ivec2(glm::floor(pixel)) / scene.grid.tileSize;
+            ++landed;
+            if (!holds(range, tile))
+                return stoa::CheckResult::fail(
+                    "lightTileRange() of " + describe(light) + " is columns " + std::to_string(range.first.x) + " to " +
+                    std::to_string(range.last.x) + ", rows " + std::to_string(range.first.y) + " to " +
+                    std::to_string(range.last.y) + ", but a point of its sphere lands in pixel (" +
+                    number(pixel.x) + ", " + number(pixel.y) + "), tile " + tileName(tile) + " of " +
+                    tileName(tiles) + " on a 400 x 270 picture in tiles of 32. The range must hold every tile the "
+                    "sphere covers, at every edge of the picture (docs: Which tiles a light touches)");
+        }
+    }
+    return stoa::CheckResult::pass("lightTileRange() holds the tile of every one of " + std::to_string(landed) +
+                                   " points of 300 spheres in and around the picture");
+}
+
+stoa::CheckResult checkTileListsMatchTheRanges() {
+    const TileScene scene;
+    Lcg random;
+    const std::vector<stoa::LightSphere> lights = lightsAround(scene, random, 60);
+    std::vector<stoa::DepthRange> depths(static_cast<std::size_t>(scene.grid.tileCount()));
+    for (stoa::DepthRange& range : depths) {
+        if (random.next() < 0.15f) continue;   // sky: empty
+        range.nearest = random.between(1.0f, 25.0f);
+        range.farthest = range.nearest + random.between(0.0f, 10.0f);
+    }
+    const stoa::TileLightLists lists = stoa::buildTileLightLists(lights, scene.projection, scene.near, scene.grid, depths);
+    const int tileCount = scene.grid.tileCount();
+    if (lists.offsets.size() != static_cast<std::size_t>(tileCount) + 1 || lists.offsets.front() != 0 ||
+        static_cast<std::size_t>(lists.offsets.back()) != lists.lights.size())
+        return stoa::CheckResult::fail("buildTileLightLists() gave " + std::to_string(lists.offsets.size()) +
+                                       " offsets for " + std::to_string(tileCount) +
+                                       " tiles; expected tileCount + 1, the first 0 and the last the length of the "
+                                       "lists (docs: Building the lists)");
+    std::vector<stoa::TileRange> ranges;
+    for (const stoa::LightSphere& light : lights)
+        ranges.push_back(stoa::lightTileRange(light, scene.projection, scene.near, scene.grid));
+    const glm::ivec2 tiles = scene.grid.tiles();
+    for (int row = 0; row < tiles.y; ++row) {
+        for (int col = 0; col < tiles.x; ++col) {
+            const int tile = scene.grid.index({col, row});
+            const stoa::DepthRange& range = depths[static_cast<std::size_t>(tile)];
+            std::vector<int> expected;
+            for (std::size_t i = 0; i < lights.size(); ++i) {
+                const float distance = -lights[i].centerView.z;
+                const bool meets = !range.empty() && distance - lights[i].reach <= range.farthest &&
+                                   distance + lights[i].reach >= range.nearest;
+                if (holds(ranges[i], {col, row}) && meets) expected.push_back(static_cast<int>(i));
+            }
+            const int begin = lists.offsets[static_cast<std::size_t>(tile)];
+            const int end = lists.offsets[static_cast<std::size_t>(tile) + 1];
+            const std::vector<int> listed(lists.lights.begin() + begin, lists.lights.begin() + std::max(begin, end));
+            if (listed != expected) {
+                std::string names;
+                for (const int i : listed) names += (names.empty() ? "" : " ") + std::to_string(i);
+                std::string wanted;
+                for (const int i : expected) wanted += (wanted.empty() ? "" : " ") + std::to_string(i);
+                return stoa::CheckResult::fail(
+                    "buildTileLightLists(): tile " + tileName({col, row}) + " lists lights [" + names +
+                    "]; the lights whose lightTileRange() holds it and whose depths meet the tile's are [" + wanted +
+                    "], in increasing order, each once (docs: Building the lists, Depth bounds)");
+            }
+        }
+    }
+    return stoa::CheckResult::pass("buildTileLightLists() lists exactly the right lights, in order, in each of " +
+                                   std::to_string(tileCount) + " tiles (60 lights, " +
+                                   std::to_string(lists.lights.size()) + " entries)");
+}
+
+} // namespace lab08
