@@ -22,11 +22,15 @@
 
 #include <glm/vec2.hpp>
 
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace stoa {
+
+class StepWorkers;
 
 struct CrowdAgent {
     int type = 0;                 // index into CrowdWorld::types
@@ -71,6 +75,18 @@ public:
     /// step. Throws InputError naming the world file and a <spawn> or
     /// <samples> line when no walkable point is found in its area.
     CrowdSimulation(const CrowdWorld& world, GroundMaps maps);
+    ~CrowdSimulation();
+    CrowdSimulation(CrowdSimulation&&) noexcept;
+    CrowdSimulation& operator=(CrowdSimulation&&) noexcept;
+
+    /// Steps on `threads` threads from now on (1, the default: on the caller's
+    /// alone). Any count gives the same crowd bit for bit: the others step
+    /// each agent ahead of its turn, and the caller takes each result in the
+    /// serial order, stepping again in its turn an agent whose result a kill
+    /// or a move earlier in the step changed. Worlds with samples or crumbs
+    /// (shared lists each agent's turn changes) step on one thread whatever this says.
+    void setThreads(int threads);
+    int threads() const;
 
     void step();
     void advance(int steps);
@@ -99,31 +115,58 @@ public:
 private:
     class Senses;
     friend class Senses;
+    struct Outcome;
+    struct StepScratch;
+
+    /// An agent in the grid, where it stood when the step began.
+    struct GridEntry {
+        glm::vec2 position;
+        float heading;
+        int type;
+        int agent;
+    };
+
+    static constexpr std::size_t kPrefetchAhead = 6;   // agents between a prefetch and its use
 
     void placeAgents();
     void placeSamples();
     glm::vec2 randomWalkablePoint(glm::vec2 centre, float radius, std::uint32_t salt, const std::string& what,
                                   int line);
-    /// An agent in the grid, where it stood when the step began.
-    struct GridEntry {
-        glm::vec2 position;
-        int type;
-        int agent;
-    };
-
-    static constexpr std::size_t kPrefetchAhead = 4;   // agents between a prefetch and its use
-
     void resolveNames();
-    void prefetchMaps(glm::vec2 xz) const;
+    void measureReaches();
     void rebuildAgentGrid();
-    void runAction(std::size_t index, const Action& action, float speedScale);
-    void move(std::size_t index);
-    int nearestAgentOfType(std::size_t index, int type, float radius) const;
+    void stepTheDead();
+    void endStep();
+
+    // One living agent's step (CrowdAgentStep.cpp): `agent` is m_agents[index]
+    // itself in the serial step, a copy in the parallel step's first pass,
+    // which records in scratch.outcome what it does to the others instead.
+    void stepAgent(std::size_t index, CrowdAgent& agent, StepScratch& scratch);
+    void runAction(std::size_t index, CrowdAgent& agent, const Action& action, float speedScale,
+                   StepScratch& scratch);
+    void move(CrowdAgent& agent, StepScratch& scratch);
+    /// The position of agent `found` as the agent stepping reads it (recorded in the parallel pass).
+    glm::vec2 targetPosition(int found, StepScratch& scratch) const;
+    /// Starts loading what the agent at `place` in the step order will read.
+    void prefetchPlace(std::size_t place, StepScratch& scratch) const;
+    static glm::vec2 headingDirection(StepScratch& scratch, std::size_t place, float heading);
+    void kill(std::size_t victim);
+    bool walkable(glm::vec2 xz) const;
+    float height(glm::vec2 xz) const;
+    /// The nearest living agent of `type` within `radius` of `from` (not `index`), ties to the lower index; -1 if none.
+    int nearestAgentOfType(std::size_t index, glm::vec2 from, int type, float radius) const;
+    /// Whether there is one (the same as nearestAgentOfType() >= 0, stopping at the first).
+    bool anyAgentOfType(std::size_t index, glm::vec2 from, int type, float radius) const;
     /// Calls visit(entry) for every grid entry within `radius` of `from`.
     template <typename Visit>
     void forEachNear(glm::vec2 from, float radius, Visit&& visit) const;
     int nearestPoint(const std::vector<glm::vec2>& points, glm::vec2 from, float radius) const;
-    void headTowards(CrowdAgent& agent, glm::vec2 target);
+
+    // The parallel step (CrowdParallelStep.cpp).
+    void stepParallel();
+    void speculate(int thread, std::atomic<std::size_t>& next);
+    bool outcomeHolds(std::size_t index, const Outcome& outcome) const;
+    void commit(std::size_t index, const Outcome& outcome);
 
     CrowdWorld m_world;
     GroundMaps m_maps;
@@ -138,7 +181,9 @@ private:
     int m_delivered = 0;
     int m_attacks = 0;
     int m_blockedMoves = 0;
-    std::vector<const Action*> m_actions;
+    float m_queryReach = 0.0f;   // the farthest an agent's senses and actions look for others, metres
+    float m_lookAhead = 0.0f;    // the farthest <blocked ahead>, metres (prefetched)
+    bool m_parallelSafe = true;  // no samples or crumbs: what one agent does to the others is a kill or a message
 
     // The living agents bucketed in square cells, rebuilt after each step:
     // the senses see the others where they stood when the step began, and
@@ -147,7 +192,17 @@ private:
     int m_cellsX = 1, m_cellsZ = 1;
     std::vector<int> m_cellStart;         // m_cellsX * m_cellsZ + 1 offsets into m_cellAgents
     std::vector<GridEntry> m_cellAgents;
+    std::vector<int> m_typeCellStart;     // the same per type: (type * cells + cell) + 1 offsets into m_typeCellAgents
+    std::vector<GridEntry> m_typeCellAgents;
     std::vector<int> m_cellOf;            // per agent, scratch of rebuildAgentGrid()
+    std::vector<glm::vec2> m_startPositions;   // per agent, where it stood when the step began
+    std::vector<std::uint8_t> m_living;         // per agent, its `alive`, packed for the senses
+
+    std::unique_ptr<StepScratch> m_serialScratch;
+    std::vector<StepScratch> m_threadScratch;    // one per thread of the parallel step
+    std::vector<Outcome> m_outcomes;             // per place in m_cellAgents
+    std::vector<glm::vec2> m_stepKills;          // where this step's victims stood when it began
+    std::unique_ptr<StepWorkers> m_workers;
 };
 
 } // namespace stoa

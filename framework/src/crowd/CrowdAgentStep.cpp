@@ -1,0 +1,440 @@
+// One living agent's step: its senses, its behaviour (the lab's), its actions
+// and its move. The serial step runs it on the agent itself; the parallel
+// step's first pass on a copy, recording what it does to the others
+// (CrowdParallelStep.cpp).
+
+#include <stoa/crowd/CrowdSimulation.hpp>
+
+#include "CrowdMath.hpp"
+#include "CrowdStepState.hpp"
+
+#include <glm/trigonometric.hpp>
+
+#include <cstring>
+#include <stdexcept>
+
+namespace stoa {
+
+using namespace crowdmath;
+
+namespace {
+
+void headTowards(CrowdAgent& agent, glm::vec2 target) {
+    const glm::vec2 to = target - agent.position;
+    if (glm::dot(to, to) > 1e-8f) agent.heading = portableAtan2(to.x, to.y);
+}
+
+/// Whether an action reads or changes other agents (a kill before it changes what it finds).
+bool readsOthers(Action::Kind kind) {
+    return kind == Action::Kind::Seek || kind == Action::Kind::Flee || kind == Action::Kind::Send ||
+           kind == Action::Kind::Attack;
+}
+
+bool sameBits(float a, float b) {
+    std::uint32_t x = 0, y = 0;
+    std::memcpy(&x, &a, sizeof x);
+    std::memcpy(&y, &b, sizeof y);
+    return x == y;
+}
+
+} // namespace
+
+/// The conditions of CrowdWorld, answered for one agent at the current step.
+class CrowdSimulation::Senses final : public CrowdSenses {
+public:
+    Senses(const CrowdSimulation& crowd, std::size_t index, const CrowdAgent& agent, StepScratch& scratch)
+        : m_crowd(crowd), m_index(index), m_agent(agent), m_scratch(scratch) {}
+
+    bool holds(const Condition& condition) const override { return test(condition) != condition.negated; }
+
+private:
+    bool test(const Condition& condition) const {
+        const CrowdAgent& agent = m_agent;
+        const AgentType& type = m_crowd.m_world.types[static_cast<std::size_t>(agent.type)];
+        switch (condition.kind) {
+        case Condition::Kind::Always: return true;
+        case Condition::Kind::Sees:
+            return m_crowd.anyAgentOfType(m_index, agent.position, condition.index, type.sightRadius);
+        case Condition::Kind::Near:
+            return m_crowd.anyAgentOfType(m_index, agent.position, condition.index, condition.value);
+        case Condition::Kind::Carrying: return agent.carrying;
+        case Condition::Kind::AtBase: {
+            if (m_crowd.m_world.bases.empty()) return false;
+            const Base& base = m_crowd.m_world.bases[static_cast<std::size_t>(agent.team)];
+            return distanceSquared(agent.position, base.position) <= condition.value * condition.value;
+        }
+        case Condition::Kind::SeesSample:
+            return m_crowd.nearestPoint(m_crowd.m_samples, agent.position, type.sightRadius) >= 0;
+        case Condition::Kind::SmellsCrumb:
+            return m_crowd.nearestPoint(m_crowd.m_crumbs, agent.position, type.sightRadius) >= 0;
+        case Condition::Kind::Blocked:
+            return !m_crowd.walkable(agent.position + headingDirection(m_scratch, m_scratch.place, agent.heading) * condition.value);
+        case Condition::Kind::TimeInState: return agent.timeInState >= condition.value;
+        case Condition::Kind::Message:
+            return condition.index >= 0 && (agent.messages & (1u << condition.index)) != 0;
+        case Condition::Kind::Chance:
+            return m_crowd.randomFor(m_index, static_cast<std::uint32_t>(condition.line) * 2u + 1u) < condition.value;
+        }
+        return false;
+    }
+
+    const CrowdSimulation& m_crowd;
+    std::size_t m_index;
+    const CrowdAgent& m_agent;   // m_crowd's agent m_index, or its copy in the parallel pass
+    StepScratch& m_scratch;
+};
+
+template <typename Visit>
+void CrowdSimulation::forEachNear(glm::vec2 from, float radius, Visit&& visit) const {
+    const glm::vec2 origin = m_maps.collision.grid.footprintMin;
+    const glm::vec2 low = (from - radius - origin) / m_cellSize;
+    const glm::vec2 high = (from + radius - origin) / m_cellSize;
+    const int x0 = cellIndex(low.x, m_cellsX), x1 = cellIndex(high.x, m_cellsX);
+    const int z0 = cellIndex(low.y, m_cellsZ), z1 = cellIndex(high.y, m_cellsZ);
+    const float r2 = radius * radius;
+    for (int cz = z0; cz <= z1; ++cz) {
+        for (int cx = x0; cx <= x1; ++cx) {
+            const std::size_t cell = static_cast<std::size_t>(cz) * m_cellsX + cx;
+            for (int k = m_cellStart[cell]; k < m_cellStart[cell + 1]; ++k) {
+                const GridEntry& entry = m_cellAgents[static_cast<std::size_t>(k)];
+                if (distanceSquared(entry.position, from) <= r2) visit(entry);
+            }
+        }
+    }
+}
+
+int CrowdSimulation::nearestAgentOfType(std::size_t index, glm::vec2 from, int type, float radius) const {
+    if (type < 0) return -1;
+    int best = -1;
+    float bestDistance = radius * radius;
+    const glm::vec2 origin = m_maps.collision.grid.footprintMin;
+    const glm::vec2 low = (from - radius - origin) / m_cellSize;
+    const glm::vec2 high = (from + radius - origin) / m_cellSize;
+    const int x0 = cellIndex(low.x, m_cellsX), x1 = cellIndex(high.x, m_cellsX);
+    const int z0 = cellIndex(low.y, m_cellsZ), z1 = cellIndex(high.y, m_cellsZ);
+    const std::size_t base = static_cast<std::size_t>(type) * static_cast<std::size_t>(m_cellsX) * m_cellsZ;
+    for (int cz = z0; cz <= z1; ++cz) {
+        const std::size_t row = base + static_cast<std::size_t>(cz) * m_cellsX;
+        // The cells of one row of the type's grid lie side by side: one run of entries.
+        const int end = m_typeCellStart[row + static_cast<std::size_t>(x1) + 1];
+        for (int k = m_typeCellStart[row + static_cast<std::size_t>(x0)]; k < end; ++k) {
+            const GridEntry& entry = m_typeCellAgents[static_cast<std::size_t>(k)];
+            const float d = distanceSquared(entry.position, from);
+            // Ties go to the lower index, whatever order the cells are visited in.
+            if (d > bestDistance || (d == bestDistance && best >= 0 && entry.agent > best)) continue;
+            if (static_cast<std::size_t>(entry.agent) == index) continue;
+            if (!m_living[static_cast<std::size_t>(entry.agent)]) continue;   // attacked this step
+            best = entry.agent;
+            bestDistance = d;
+        }
+    }
+    return best;
+}
+
+bool CrowdSimulation::anyAgentOfType(std::size_t index, glm::vec2 from, int type, float radius) const {
+    if (type < 0) return false;
+    const float r2 = radius * radius;
+    const glm::vec2 origin = m_maps.collision.grid.footprintMin;
+    const glm::vec2 low = (from - radius - origin) / m_cellSize;
+    const glm::vec2 high = (from + radius - origin) / m_cellSize;
+    const int x0 = cellIndex(low.x, m_cellsX), x1 = cellIndex(high.x, m_cellsX);
+    const int z0 = cellIndex(low.y, m_cellsZ), z1 = cellIndex(high.y, m_cellsZ);
+    const std::size_t base = static_cast<std::size_t>(type) * static_cast<std::size_t>(m_cellsX) * m_cellsZ;
+    for (int cz = z0; cz <= z1; ++cz) {
+        const std::size_t row = base + static_cast<std::size_t>(cz) * m_cellsX;
+        const int end = m_typeCellStart[row + static_cast<std::size_t>(x1) + 1];
+        for (int k = m_typeCellStart[row + static_cast<std::size_t>(x0)]; k < end; ++k) {
+            const GridEntry& entry = m_typeCellAgents[static_cast<std::size_t>(k)];
+            if (distanceSquared(entry.position, from) <= r2 && static_cast<std::size_t>(entry.agent) != index &&
+                m_living[static_cast<std::size_t>(entry.agent)])
+                return true;
+        }
+    }
+    return false;
+}
+
+int CrowdSimulation::nearestPoint(const std::vector<glm::vec2>& points, glm::vec2 from, float radius) const {
+    int best = -1;
+    float bestDistance = radius * radius;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const float d = distanceSquared(points[i], from);
+        if (d <= bestDistance && (best < 0 || d < bestDistance)) {
+            best = static_cast<int>(i);
+            bestDistance = d;
+        }
+    }
+    return best;
+}
+
+glm::vec2 CrowdSimulation::targetPosition(int found, StepScratch& scratch) const {
+    const glm::vec2 position = m_agents[static_cast<std::size_t>(found)].position;
+    if (Outcome* outcome = scratch.outcome) {
+        // It may have moved by the agent's turn: the turn checks that it has not.
+        if (outcome->targetCount == Outcome::kMaxReads) outcome->redo = true;
+        else {
+            outcome->targets[outcome->targetCount] = found;
+            outcome->targetPositions[outcome->targetCount++] = position;
+        }
+    }
+    return position;
+}
+
+glm::vec2 CrowdSimulation::headingDirection(StepScratch& scratch, std::size_t place, float heading) {
+    // direction() of the same bits gives the same bits: kept from the prefetch
+    // or the senses for the move, which turns by 0 first.
+    const std::size_t slot = place % StepScratch::kRing;
+    if (!sameBits(scratch.ringHeadings[slot], heading)) {
+        scratch.ringHeadings[slot] = heading;
+        scratch.ringDirections[slot] = direction(heading);
+    }
+    return scratch.ringDirections[slot];
+}
+
+bool CrowdSimulation::walkable(glm::vec2 xz) const {
+    return m_code.walkableAt(m_maps.collision, xz);
+}
+
+float CrowdSimulation::height(glm::vec2 xz) const {
+    return m_code.heightAt(m_maps.heights, xz);
+}
+
+void CrowdSimulation::kill(std::size_t victimIndex) {
+    CrowdAgent& victim = m_agents[victimIndex];
+    victim.alive = false;
+    m_living[victimIndex] = 0;
+    victim.deadFor = 0.0f;
+    if (victim.carrying) m_samples.push_back(victim.position);
+    victim.carrying = false;
+    ++m_attacks;
+    m_stepKills.push_back(m_startPositions[victimIndex]);
+}
+
+void CrowdSimulation::runAction(std::size_t index, CrowdAgent& agent, const Action& action, float speedScale,
+                                StepScratch& scratch) {
+    if (scratch.outcome && scratch.outcome->victim >= 0 && readsOthers(action.kind)) {
+        // After a kill the others are not as the parallel pass sees them: step it in its turn.
+        scratch.outcome->redo = true;
+        return;
+    }
+    const AgentType& type = m_world.types[static_cast<std::size_t>(agent.type)];
+    const float pickReach = type.radius + reach;
+    const std::uint32_t salt = static_cast<std::uint32_t>(action.line) * 2u;
+    switch (action.kind) {
+    case Action::Kind::Wander: {
+        const float turn = glm::radians(action.value) * m_world.step;
+        agent.heading = wrapAngle(agent.heading + (2.0f * randomFor(index, salt) - 1.0f) * turn);
+        agent.speed = type.speed * speedScale;
+        break;
+    }
+    case Action::Kind::Seek: {
+        int found = -1;
+        glm::vec2 target{0.0f};
+        if (action.index == Action::kSeekBase) {
+            if (!m_world.bases.empty()) {
+                target = m_world.bases[static_cast<std::size_t>(agent.team)].position;
+                found = 0;
+            }
+        } else if (action.index == Action::kSeekSample) {
+            found = nearestPoint(m_samples, agent.position, type.sightRadius);
+            if (found >= 0) target = m_samples[static_cast<std::size_t>(found)];
+        } else if (action.index == Action::kSeekCrumb) {
+            found = nearestPoint(m_crumbs, agent.position, type.sightRadius);
+            if (found >= 0) target = m_crumbs[static_cast<std::size_t>(found)];
+        } else {
+            found = nearestAgentOfType(index, agent.position, action.index, type.sightRadius);
+            if (found >= 0) target = targetPosition(found, scratch);
+        }
+        if (found >= 0) headTowards(agent, target);
+        agent.speed = type.speed * speedScale;
+        break;
+    }
+    case Action::Kind::Flee: {
+        const int found = nearestAgentOfType(index, agent.position, action.index, type.sightRadius);
+        if (found >= 0) headTowards(agent, 2.0f * agent.position - targetPosition(found, scratch));
+        agent.speed = type.speed * speedScale;
+        break;
+    }
+    case Action::Kind::FollowCrumbs: {
+        // The crumb within sight farthest from the base leads away from it, towards the samples.
+        const glm::vec2 base = m_world.bases.empty() ? agent.position : m_world.bases[static_cast<std::size_t>(agent.team)].position;
+        int best = -1;
+        float bestFromBase = -1.0f;
+        const float sight2 = type.sightRadius * type.sightRadius;
+        for (std::size_t i = 0; i < m_crumbs.size(); ++i) {
+            if (distanceSquared(m_crumbs[i], agent.position) > sight2) continue;
+            const float fromBase = distanceSquared(m_crumbs[i], base);
+            if (fromBase > bestFromBase) {
+                best = static_cast<int>(i);
+                bestFromBase = fromBase;
+            }
+        }
+        if (best >= 0) headTowards(agent, m_crumbs[static_cast<std::size_t>(best)]);
+        agent.speed = type.speed * speedScale;
+        break;
+    }
+    case Action::Kind::PickUp: {
+        if (agent.carrying) break;
+        const int found = nearestPoint(m_samples, agent.position, pickReach);
+        if (found >= 0) {
+            m_samples.erase(m_samples.begin() + found);
+            agent.carrying = true;
+        }
+        break;
+    }
+    case Action::Kind::Drop: {
+        if (!agent.carrying) break;
+        agent.carrying = false;
+        const bool atBase = !m_world.bases.empty() &&
+                            distanceSquared(agent.position, m_world.bases[static_cast<std::size_t>(agent.team)].position) <=
+                                m_world.bases[static_cast<std::size_t>(agent.team)].radius *
+                                    m_world.bases[static_cast<std::size_t>(agent.team)].radius;
+        if (atBase) ++m_delivered;
+        else m_samples.push_back(agent.position);
+        break;
+    }
+    case Action::Kind::DropCrumb:
+        if (agent.walkedSinceCrumb >= crumbSpacing && m_crumbs.size() < static_cast<std::size_t>(maxCrumbs)) {
+            m_crumbs.push_back(agent.position);
+            agent.walkedSinceCrumb = 0.0f;
+        }
+        break;
+    case Action::Kind::PickUpCrumb: {
+        const int found = nearestPoint(m_crumbs, agent.position, pickReach);
+        if (found >= 0) m_crumbs.erase(m_crumbs.begin() + found);
+        break;
+    }
+    case Action::Kind::Stop: agent.speed = 0.0f; break;
+    case Action::Kind::Send: {
+        // Every living agent within the radius, found through the grid, hears it next step.
+        const std::uint32_t bit = 1u << action.index;
+        forEachNear(agent.position, action.value, [&](const GridEntry& entry) {
+            CrowdAgent& hearer = m_agents[static_cast<std::size_t>(entry.agent)];
+            if (static_cast<std::size_t>(entry.agent) == index || !m_living[static_cast<std::size_t>(entry.agent)]) return;
+            if (scratch.outcome) scratch.heard.emplace_back(entry.agent, bit);
+            else hearer.nextMessages |= bit;
+        });
+        break;
+    }
+    case Action::Kind::Attack: {
+        const int found = nearestAgentOfType(index, agent.position, action.index, pickReach);
+        if (found < 0) break;
+        if (scratch.outcome) scratch.outcome->victim = found;
+        else kill(static_cast<std::size_t>(found));
+        break;
+    }
+    }
+}
+
+void CrowdSimulation::move(CrowdAgent& agent, StepScratch& scratch) {
+    const float distance = agent.speed * m_world.step;
+    if (distance <= 0.0f) return;
+    int& blocked = scratch.outcome ? scratch.outcome->blocked : m_blockedMoves;
+    // Straight on if the collision map lets it; else the smallest turn that does,
+    // trying right before left; else stay and turn around.
+    static const float turns[] = {0.0f, 0.25f * kPi, -0.25f * kPi, 0.5f * kPi, -0.5f * kPi, 0.75f * kPi, -0.75f * kPi};
+    for (const float turn : turns) {
+        const float heading = agent.heading + turn;
+        const glm::vec2 next = agent.position + headingDirection(scratch, scratch.place, heading) * distance;
+        if (walkable(next)) {
+            if (turn != 0.0f) ++blocked;
+            agent.heading = wrapAngle(heading);
+            agent.position = next;
+            agent.walkedSinceCrumb += distance;
+            return;
+        }
+    }
+    ++blocked;
+    agent.heading = wrapAngle(agent.heading + kPi);
+}
+
+void CrowdSimulation::prefetchPlace(std::size_t place, StepScratch& scratch) const {
+    // The agents' own states lie in index order, not in the step's: each is
+    // fetched twice as far ahead as the map texels it will read.
+    if (place + 2 * kPrefetchAhead < m_cellAgents.size()) {
+        const char* far = reinterpret_cast<const char*>(&m_agents[static_cast<std::size_t>(m_cellAgents[place + 2 * kPrefetchAhead].agent)]);
+        __builtin_prefetch(far);
+        __builtin_prefetch(far + sizeof(CrowdAgent) - 1);
+    }
+    const std::size_t ahead = place + kPrefetchAhead;
+    if (ahead >= m_cellAgents.size()) return;
+    const GridEntry& entry = m_cellAgents[ahead];   // where it stands and heads now, before its turn
+    const CollisionMap& collision = m_maps.collision;
+    const auto texelOf = [](const GroundGrid& grid, glm::vec2 xz, float shift) -> std::size_t {
+        const glm::vec2 t = (xz - grid.footprintMin) / (grid.footprintMax - grid.footprintMin) *
+                                glm::vec2(grid.width, grid.height) - shift;
+        const int col = std::clamp(static_cast<int>(t.x), 0, grid.width - 1);
+        const int row = std::clamp(static_cast<int>(t.y), 0, std::max(0, grid.height - 2));
+        return static_cast<std::size_t>(row) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(col);
+    };
+    // The texels under it and `ahead` of it (the look-ahead and the move), and
+    // the two rows of heights around it (heightAt() is bilinear between texel centres).
+    __builtin_prefetch(collision.walkable.data() + texelOf(collision.grid, entry.position, 0.0f));
+    if (m_lookAhead > 0.0f) {
+        const glm::vec2 look = entry.position + headingDirection(scratch, ahead, entry.heading) * m_lookAhead;
+        __builtin_prefetch(collision.walkable.data() + texelOf(collision.grid, look, 0.0f));
+    }
+    const HeightField& heights = m_maps.heights;
+    if (heights.values.size() < 2) return;
+    const std::size_t texel = texelOf(heights.grid, entry.position, 0.5f);
+    const std::size_t width = static_cast<std::size_t>(heights.grid.width);
+    const std::size_t last = heights.values.size() - 1;
+    __builtin_prefetch(heights.values.data() + texel);
+    __builtin_prefetch(heights.values.data() + std::min(texel + 1, last));
+    __builtin_prefetch(heights.values.data() + std::min(texel + width, last));
+    __builtin_prefetch(heights.values.data() + std::min(texel + width + 1, last));
+}
+
+void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratch& scratch) {
+    const float dt = m_world.step;
+    const AgentType& type = m_world.types[static_cast<std::size_t>(agent.type)];
+    const Behaviour& behaviour = m_world.behaviours[static_cast<std::size_t>(type.behaviourIndex)];
+    const Senses senses(*this, index, agent, scratch);
+    float speedScale = 1.0f;
+    static const std::string kStand = "stand";
+    const std::string* animation = &kStand;
+    int state = -1;
+    std::vector<const Action*>& actions = scratch.actions;
+    actions.clear();
+    if (behaviour.kind == Behaviour::Kind::StateMachine) {
+        state = m_code.stepStateMachine(behaviour.machine, agent.state, senses, actions);
+        if (state < 0 || state >= static_cast<int>(behaviour.machine.states.size())) {
+            throw std::out_of_range("stepStateMachine() returned state " + std::to_string(state) + " of behaviour '" +
+                                    behaviour.name + "', which has " +
+                                    std::to_string(behaviour.machine.states.size()) + " states");
+        }
+        const MachineState& now = behaviour.machine.states[static_cast<std::size_t>(state)];
+        speedScale = now.speedScale;
+        animation = &now.animation;
+    } else {
+        state = m_code.arbitrateLayers(behaviour.stack, senses);
+        if (state < -1 || state >= static_cast<int>(behaviour.stack.layers.size())) {
+            throw std::out_of_range("arbitrateLayers() returned layer " + std::to_string(state) + " of behaviour '" +
+                                    behaviour.name + "', which has " +
+                                    std::to_string(behaviour.stack.layers.size()) + " layers");
+        }
+        if (state >= 0) {
+            const Layer& layer = behaviour.stack.layers[static_cast<std::size_t>(state)];
+            for (const Action& action : layer.actions) actions.push_back(&action);
+            speedScale = layer.speedScale;
+            animation = &layer.animation;
+        }
+    }
+    if (state != agent.state) {
+        agent.timeInState = 0.0f;
+        agent.state = state;
+        if (*animation != agent.animation) {
+            agent.animation = *animation;
+            agent.animationTime = 0.0f;
+        }
+    }
+    agent.speed = 0.0f;
+    for (const Action* action : actions) runAction(index, agent, *action, speedScale, scratch);
+    const glm::vec2 before = agent.position;
+    move(agent, scratch);
+    // The ground only changes under an agent that moved.
+    if (agent.position != before) agent.y = height(agent.position);
+    agent.timeInState += dt;
+    agent.animationTime += dt;
+}
+
+} // namespace stoa

@@ -1,0 +1,49 @@
+#pragma once
+// What one agent's step writes besides the agent itself, in the serial step
+// and in the parallel step's first pass (CrowdSimulation's private parts;
+// framework/src/crowd only).
+
+#include <stoa/crowd/CrowdSimulation.hpp>
+
+#include <glm/vec2.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace stoa {
+
+/// One agent stepped ahead of its turn: its state after the step and what it
+/// did to the others, taken in its turn if what it read then is still so.
+struct CrowdSimulation::Outcome {
+    static constexpr int kMaxReads = 2;
+
+    CrowdAgent agent;                    // the agent after its step (nextMessages aside)
+    int victim = -1;                     // the agent it attacked, if any
+    int targets[kMaxReads] = {};         // agents whose position it read (seek, flee) ...
+    glm::vec2 targetPositions[kMaxReads] = {};   // ... and what it read
+    int targetCount = 0;
+    int thread = 0;                      // whose scratch holds its messages
+    std::size_t heardBegin = 0, heardEnd = 0;   // its messages: [begin, end) of that scratch's heard
+    int blocked = 0;                     // moves the collision map turned aside
+    bool redo = false;                   // step it again in its turn (it read too much, or threw)
+};
+
+/// Per thread: the actions list the lab's behaviour fills, and where the
+/// parallel pass records what an agent did to others (outcome null: the serial step).
+struct CrowdSimulation::StepScratch {
+    static constexpr std::size_t kRing = 16;   // > kPrefetchAhead
+
+    std::vector<const Action*> actions;
+    std::size_t place = 0;   // the place in the step order of the agent stepping
+    // The directions of headings, by place modulo kRing: filled by the prefetch
+    // a few agents ahead, read by the senses and the move. Only a memo of
+    // direction(heading), so a stale entry of the same heading is still right.
+    float ringHeadings[kRing] = {};
+    glm::vec2 ringDirections[kRing] = {};
+    Outcome* outcome = nullptr;
+    std::vector<std::pair<int, std::uint32_t>> heard;   // (hearer, message bit), in the order sent
+};
+
+} // namespace stoa
