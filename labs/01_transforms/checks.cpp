@@ -54,10 +54,19 @@ stoa::CheckResult checkCameraLimits() {
 
     stoa::OrbitCamera close(glm::vec3(0.0f), 1.0f, 0.0f, 0.0f);
     close.dolly(50.0f);
-    if (!(close.distance() >= 0.05f - 1e-6f))
+    if (!(std::fabs(close.distance() - 0.05f) <= 1e-6f))
         return stoa::CheckResult::fail("dolly(50) from a distance of 1 brought the eye to " +
                                        std::to_string(close.distance()) +
-                                       " from the target: the distance never drops below 0.05 (docs: The orbit camera)");
+                                       " from the target: exp(-50) is far below the floor, so the distance stops at "
+                                       "0.05, never below it (docs: The orbit camera)");
+    // Above the floor the step is the exponential's alone: exp(-2.5) = 0.082.
+    stoa::OrbitCamera nearer(glm::vec3(0.0f), 1.0f, 0.0f, 0.0f);
+    nearer.dolly(2.5f);
+    if (!(std::fabs(nearer.distance() - std::exp(-2.5f)) <= 1e-5f))
+        return stoa::CheckResult::fail("dolly(2.5) from a distance of 1 brought the eye to " +
+                                       std::to_string(nearer.distance()) + " from the target; expected exp(-2.5) = " +
+                                       std::to_string(std::exp(-2.5f)) +
+                                       ", which is above the floor of 0.05 (docs: The orbit camera)");
     return stoa::CheckResult::pass("the pitch stays in [-89, 89] degrees for both cameras, and dolly stops at 0.05");
 }
 

@@ -27,6 +27,7 @@
 //                                     (default 16.667: 60 frames a second)
 // In the window, `b` throws the ball from the eye along the view.
 
+#include "checks.hpp"
 #include "lab07.hpp"
 
 #include <stoa/core/NotImplemented.hpp>
@@ -235,6 +236,11 @@ public:
             m_outlineProgram->set("uOutlineColor", glm::vec3(1.0f, 0.55f, 0.05f));
             m_overlay->draw(*m_outlineProgram, {0, 0, size.x, size.y});
         }
+    }
+
+    stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
+        if (spec.check == "slab_test_table") return lab07::checkSlabTestTable();
+        return Lab::runCheck(spec);
     }
 
     stoa::Camera& activeCamera() override { return m_cameras.active(); }
