@@ -1,4 +1,4 @@
-// showcase_benchmark [--runs R] [--size WxH] [--picture FILE.png]: the showcase (stoa-editor
+// showcase_benchmark [--runs R] [--size WxH] [--picture FILE.png] [--scene FILE.json]: the showcase (stoa-editor
 // --scene showcase, docs/showcase.md) drawn headless with the solutions' code,
 // medians of R frames (default 7) at 1280x720:
 //   - the frame time as the editor draws it (no waits between passes);
@@ -8,7 +8,9 @@
 //   - what the frame held: objects culled, too small and drawn per level of
 //     detail, point lights and their tile-list entries, agents.
 // The crowd walks and the lights wander 1/30 s between frames. --picture saves
-// the last frame (to compare a GPU's picture with llvmpipe's).
+// the last frame (to compare a GPU's picture with llvmpipe's). --scene draws
+// another scene file the same way (a larger field or light swarm: the editor's
+// caps, docs/instructor-guide.md).
 
 #include "BenchmarkTiming.hpp"
 
@@ -30,8 +32,7 @@ using namespace stoa::benchmark;
 
 namespace {
 
-void showcaseFigures(int runs, glm::ivec2 size, const std::string& picture) {
-    const std::filesystem::path scene = paths::assetsDir() / "scenes" / "showcase.json";
+void showcaseFigures(int runs, glm::ivec2 size, const std::string& picture, const std::filesystem::path& scene) {
     const EditorScene loaded = loadEditorScene(scene);
     std::ostringstream cases;
     cases << "lab = 11_editor\n\n[case showcase]\ndescription = the showcase\nscene = " << scene.string()
@@ -41,8 +42,8 @@ void showcaseFigures(int runs, glm::ivec2 size, const std::string& picture) {
     const LabManifest manifest = parseManifest(cases.str(), "showcase_benchmark");
 
     HeadlessContext context;
-    std::printf("the showcase (headless, %s), %dx%d, medians of %d frames:\n", context.description().c_str(), size.x,
-                size.y, runs);
+    std::printf("%s (headless, %s), %dx%d, medians of %d frames:\n", scene.filename().string().c_str(),
+                context.description().c_str(), size.x, size.y, runs);
     LabResources resources({STOA_SOLUTIONS_DIR, paths::shadersDir()});   // as a solutions build's lab 11 finds its GLSL
     const Framebuffer target(size.x, size.y);
     target.bind();
@@ -92,6 +93,7 @@ int main(int argc, char** argv) {
     int runs = 7;
     glm::ivec2 size(1280, 720);
     std::string picture;
+    std::filesystem::path scene = paths::assetsDir() / "scenes" / "showcase.json";
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--runs") == 0 && i + 1 < argc) {
             runs = std::atoi(argv[++i]);
@@ -108,14 +110,16 @@ int main(int argc, char** argv) {
             }
         } else if (std::strcmp(argv[i], "--picture") == 0 && i + 1 < argc) {
             picture = argv[++i];
+        } else if (std::strcmp(argv[i], "--scene") == 0 && i + 1 < argc) {
+            scene = argv[++i];
         } else {
-            std::fprintf(stderr, "usage: showcase_benchmark [--runs R] [--size WxH] [--picture FILE.png]\n");
+            std::fprintf(stderr, "usage: showcase_benchmark [--runs R] [--size WxH] [--picture FILE.png] [--scene FILE.json]\n");
             return 2;
         }
     }
     try {
         std::printf("showcase_benchmark\n");
-        showcaseFigures(runs, size, picture);
+        showcaseFigures(runs, size, picture, scene);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "showcase_benchmark: %s\n", error.what());
         return 1;

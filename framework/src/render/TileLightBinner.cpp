@@ -6,6 +6,10 @@
 #include <cmath>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace stoa {
 
 namespace {
@@ -18,6 +22,36 @@ constexpr int kBitsPerWord = 64;
 // distance of a tile's smallest (largest) depth is its smallest (largest)
 // distance, bit for bit.
 float distanceOf(float windowDepth, float p22, float p32) { return p32 / (2.0f * windowDepth - 1.0f + p22); }
+
+// The smallest and the largest of `count` window depths, sky (1) left out,
+// folded into `low` and `high`. With SSE2 four at a time: depths are never NaN
+// and never -0, so the order of the comparisons cannot change the result.
+void rowExtremes(const float* depth, int count, float& low, float& high) {
+    int x = 0;
+#if defined(__SSE2__)
+    if (count >= 4) {
+        const __m128 one = _mm_set1_ps(1.0f), skyLow = _mm_set1_ps(2.0f), skyHigh = _mm_set1_ps(-1.0f);
+        __m128 lows = _mm_set1_ps(low), highs = _mm_set1_ps(high);
+        for (; x + 4 <= count; x += 4) {
+            const __m128 d = _mm_loadu_ps(depth + x);
+            const __m128 sky = _mm_cmpge_ps(d, one);
+            lows = _mm_min_ps(lows, _mm_or_ps(_mm_and_ps(sky, skyLow), _mm_andnot_ps(sky, d)));
+            highs = _mm_max_ps(highs, _mm_or_ps(_mm_and_ps(sky, skyHigh), _mm_andnot_ps(sky, d)));
+        }
+        lows = _mm_min_ps(lows, _mm_shuffle_ps(lows, lows, _MM_SHUFFLE(1, 0, 3, 2)));
+        lows = _mm_min_ps(lows, _mm_shuffle_ps(lows, lows, _MM_SHUFFLE(2, 3, 0, 1)));
+        highs = _mm_max_ps(highs, _mm_shuffle_ps(highs, highs, _MM_SHUFFLE(1, 0, 3, 2)));
+        highs = _mm_max_ps(highs, _mm_shuffle_ps(highs, highs, _MM_SHUFFLE(2, 3, 0, 1)));
+        low = _mm_cvtss_f32(lows);
+        high = _mm_cvtss_f32(highs);
+    }
+#endif
+    for (; x < count; ++x) {
+        const bool sky = depth[x] >= 1.0f;
+        low = std::min(low, sky ? 2.0f : depth[x]);
+        high = std::max(high, sky ? -1.0f : depth[x]);
+    }
+}
 
 } // namespace
 
@@ -36,12 +70,7 @@ const std::vector<DepthRange>& TileLightBinner::depthRanges(const float* windowD
             const int begin = column * grid.tileSize;
             const int end = std::min(begin + grid.tileSize, size.x);
             float low = lowest[column], high = highest[column];
-            for (int x = begin; x < end; ++x) {
-                const float d = row[x];
-                const bool sky = d >= 1.0f;
-                low = std::min(low, sky ? 2.0f : d);
-                high = std::max(high, sky ? -1.0f : d);
-            }
+            rowExtremes(row + begin, end - begin, low, high);
             lowest[column] = low;
             highest[column] = high;
         }
@@ -102,41 +131,61 @@ TileLightBinner::Footprint TileLightBinner::footprint(const LightSphere& sphere,
     return light;
 }
 
-void TileLightBinner::markTiles(const Footprint& light, int index, int columns, int words) {
+long TileLightBinner::markTiles(const Footprint& light, int index, int columns, int tileCount) {
     const std::uint64_t bit = std::uint64_t{1} << (index % kBitsPerWord);
-    const std::size_t word = static_cast<std::size_t>(index / kBitsPerWord);
+    // The bits of this light's word: one per tile, in the tiles' order, so a row of tiles is a run of words.
+    std::uint64_t* bits = m_bits.data() + static_cast<std::size_t>(index / kBitsPerWord) * static_cast<std::size_t>(tileCount);
     const float* tileNearest = m_tileNearest.data();
     const float* tileFarthest = m_tileFarthest.data();
+    long marked = 0;
     for (int row = light.rowFirst; row <= light.rowLast; ++row) {
-        const std::size_t first = static_cast<std::size_t>(row) * static_cast<std::size_t>(columns);
-        for (std::size_t t = first + static_cast<std::size_t>(light.columnFirst);
-             t <= first + static_cast<std::size_t>(light.columnLast); ++t) {
+        int t = row * columns + light.columnFirst;
+        const int last = row * columns + light.columnLast;
+#if defined(__SSE2__)
+        // Four tiles at a time: the two comparisons give four 32-bit masks,
+        // each widened to the 64 bits of its tile's word.
+        const __m128 lightNearest = _mm_set1_ps(light.nearest), lightFarthest = _mm_set1_ps(light.farthest);
+        const __m128i bits2 = _mm_set1_epi64x(static_cast<long long>(bit));
+        __m128i counts = _mm_setzero_si128();
+        for (; t + 3 <= last; t += 4) {
+            const __m128 meets = _mm_and_ps(_mm_cmple_ps(lightNearest, _mm_loadu_ps(tileFarthest + t)),
+                                            _mm_cmpge_ps(lightFarthest, _mm_loadu_ps(tileNearest + t)));
+            const __m128i mask = _mm_castps_si128(meets);
+            __m128i* words = reinterpret_cast<__m128i*>(bits + t);
+            _mm_storeu_si128(words, _mm_or_si128(_mm_loadu_si128(words), _mm_and_si128(bits2, _mm_unpacklo_epi32(mask, mask))));
+            _mm_storeu_si128(words + 1,
+                             _mm_or_si128(_mm_loadu_si128(words + 1), _mm_and_si128(bits2, _mm_unpackhi_epi32(mask, mask))));
+            counts = _mm_sub_epi32(counts, mask);
+        }
+        alignas(16) int lanes[4];
+        _mm_store_si128(reinterpret_cast<__m128i*>(lanes), counts);
+        marked += lanes[0] + lanes[1] + lanes[2] + lanes[3];
+#endif
+        for (; t <= last; ++t) {
             // False for a sky tile: its depths are NaN.
             const bool meets = light.nearest <= tileFarthest[t] && light.farthest >= tileNearest[t];
-            m_bits[t * static_cast<std::size_t>(words) + word] |= bit & (std::uint64_t{0} - std::uint64_t{meets});
-            m_counts[t] += meets;
+            bits[t] |= bit & (std::uint64_t{0} - static_cast<std::uint64_t>(meets));
+            marked += meets;
         }
     }
+    return marked;
 }
 
-void TileLightBinner::readLists(int tileCount, int words, TileLightLists& out) const {
-    out.offsets.resize(static_cast<std::size_t>(tileCount) + 1);
-    int total = 0;
-    for (int t = 0; t < tileCount; ++t) {
-        out.offsets[static_cast<std::size_t>(t)] = total;
-        total += m_counts[static_cast<std::size_t>(t)];
-    }
-    out.offsets[static_cast<std::size_t>(tileCount)] = total;
-    out.lights.resize(static_cast<std::size_t>(total));
-    int* entry = out.lights.data();
-    const std::uint64_t* bits = m_bits.data();
-    for (int t = 0; t < tileCount; ++t) {
-        for (int w = 0; w < words; ++w, ++bits) {
+void TileLightBinner::readLists(int tileCount, int words, long entries, TileLightLists& out) const {
+    const std::size_t stride = static_cast<std::size_t>(tileCount);
+    out.offsets.resize(stride + 1);
+    out.lights.resize(static_cast<std::size_t>(entries));
+    int* const first = out.lights.data();
+    int* entry = first;
+    for (std::size_t t = 0; t < stride; ++t) {
+        out.offsets[t] = static_cast<int>(entry - first);
+        for (int w = 0; w < words; ++w) {
             // The set bits from the lowest: the tile's lights in increasing order.
-            for (std::uint64_t left = *bits; left != 0; left &= left - 1)
+            for (std::uint64_t left = m_bits[static_cast<std::size_t>(w) * stride + t]; left != 0; left &= left - 1)
                 *entry++ = w * kBitsPerWord + __builtin_ctzll(left);
         }
     }
+    out.offsets[stride] = static_cast<int>(entry - first);
 }
 
 void TileLightBinner::assign(const std::vector<LightSphere>& spheres, const glm::mat4& projection, float near,
@@ -154,10 +203,10 @@ void TileLightBinner::assign(const std::vector<LightSphere>& spheres, const glm:
         m_tileFarthest[t] = range.empty() ? nan : range.farthest;
     }
     m_bits.assign(static_cast<std::size_t>(tileCount) * static_cast<std::size_t>(words), 0);
-    m_counts.assign(static_cast<std::size_t>(tileCount), 0);
+    long entries = 0;
     for (std::size_t i = 0; i < spheres.size(); ++i)
-        markTiles(footprint(spheres[i], projection, near, grid), static_cast<int>(i), columns, words);
-    readLists(tileCount, words, out);
+        entries += markTiles(footprint(spheres[i], projection, near, grid), static_cast<int>(i), columns, tileCount);
+    readLists(tileCount, words, entries, out);
 }
 
 } // namespace stoa

@@ -13,8 +13,9 @@
 // meets the tile's depths. tests/labs/TileLightBinnerTests.cpp compares the
 // two on random scenes. How it gets there differs, for speed: the depths are
 // kept as two flat arrays, each light marks one bit per tile it reaches (one
-// 64-bit word holds 64 lights), and each tile's list is read off its bits in
-// order, so that every entry is written once, in sequence. How fast:
+// 64-bit word holds 64 lights; a light's words for a row of tiles lie side by
+// side), and each tile's list is read off its bits in order, so that every
+// entry is written once, in sequence. How fast:
 // tests/benchmarks/light_assignment_benchmark.cpp.
 
 #include <stoa/render/DeferredShading.hpp>
@@ -53,15 +54,15 @@ private:
     };
 
     Footprint footprint(const LightSphere& sphere, const glm::mat4& projection, float near, const TileGrid& grid) const;
-    void markTiles(const Footprint& light, int index, int columns, int words);
-    void readLists(int tileCount, int words, TileLightLists& out) const;
+    // Sets the light's bit in each tile of its rectangle that it reaches; returns how many.
+    long markTiles(const Footprint& light, int index, int columns, int tileCount);
+    void readLists(int tileCount, int words, long entries, TileLightLists& out) const;
 
     std::vector<DepthRange> m_ranges;
     std::vector<float> m_lowest, m_highest;   // per tile, scratch of depthRanges()
     std::vector<float> m_tileNearest;         // per tile; NaN where the tile is sky
     std::vector<float> m_tileFarthest;
-    std::vector<std::uint64_t> m_bits;        // per tile, `words` words: bit i of word w is light 64 w + i
-    std::vector<int> m_counts;                // per tile
+    std::vector<std::uint64_t> m_bits;        // word w of every tile, then word w + 1: bit i of word w is light 64 w + i
 };
 
 } // namespace stoa
