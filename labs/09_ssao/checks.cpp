@@ -10,8 +10,10 @@
 
 #include <stoa/camera/FirstPersonCamera.hpp>
 #include <stoa/geometry/Shapes.hpp>
+#include <stoa/gl/Debug.hpp>
 #include <stoa/gl/Framebuffer.hpp>
 #include <stoa/gl/GpuMesh.hpp>
+#include <stoa/gl/OpenGL.hpp>
 #include <stoa/image/Image.hpp>
 #include <stoa/render/AmbientOcclusion.hpp>
 #include <stoa/render/AmbientOcclusionPass.hpp>
@@ -24,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -129,6 +132,62 @@ stoa::CheckResult checkRangeCheckFromThePoint(stoa::DeferredRenderer& renderer, 
         return stoa::CheckResult::fail(what + "; " + stoa::checkNumber(got) + " is what |S.z - sceneZ|, the sample's distance, gives: "
                                               "the range check measures from P (docs: The range check)");
     return stoa::CheckResult::fail(what + " (docs: The occlusion estimate, The range check)");
+}
+
+stoa::CheckResult checkBlurFootprint(stoa::DeferredRenderer& renderer, stoa::AmbientOcclusionPass& occlusion) {
+    // A picture whose sides are no multiple of 4, so the window meets every edge
+    // at every offset. Draw once to size the pass's targets, then replace the raw
+    // occlusion with random levels and blur them.
+    const glm::ivec2 size(37, 29);
+    const stoa::GpuMesh square(stoa::shapes::plane(1.0f, 1));
+    stoa::DrawItem wall = facingTheCamera(square, glm::vec3(0.0f, 0.0f, -10.0f));
+    wall.model = wall.model * glm::scale(glm::mat4(1.0f), glm::vec3(40.0f, 1.0f, 40.0f));
+    stoa::FirstPersonCamera camera(glm::vec3(0.0f), 0.0f, 0.0f);
+    camera.setProjection(60.0f, 0.5f, 50.0f);
+    occlusion.setKernel({glm::vec3(0.0f, 0.0f, 0.5f)}, std::vector<glm::vec3>(16, glm::vec3(1.0f, 0.0f, 0.0f)));
+    renderer.renderGeometry({wall}, camera, size);
+    occlusion.render(renderer, size, {0.5f, 0.025f});
+
+    // Levels row by row from the bottom, as OpenGL counts rows and gl_FragCoord does.
+    std::vector<std::uint8_t> levels(static_cast<std::size_t>(size.x * size.y));
+    std::uint32_t state = 20261129u;
+    for (std::uint8_t& level : levels) {
+        state = state * 1664525u + 1013904223u;
+        level = static_cast<std::uint8_t>(state >> 24);
+    }
+    STOA_GL_CALL(glBindTexture(GL_TEXTURE_2D, occlusion.raw().id()));
+    STOA_GL_CALL(glPixelStorei(GL_UNPACK_ALIGNMENT, 1));
+    STOA_GL_CALL(glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size.x, size.y, GL_RED, GL_UNSIGNED_BYTE, levels.data()));
+    STOA_GL_CALL(glPixelStorei(GL_UNPACK_ALIGNMENT, 4));
+    occlusion.blur();
+    const stoa::Image blurred = occlusion.blurredTarget().readColor();   // row 0 at the top
+    stoa::Framebuffer::bindDefault();
+
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            float sum = 0.0f;
+            int kept = 0;
+            for (int dy = -2; dy <= 1; ++dy)
+                for (int dx = -2; dx <= 1; ++dx) {
+                    const int px = x + dx, py = y + dy;
+                    if (px < 0 || py < 0 || px >= size.x || py >= size.y) continue;
+                    sum += levels[static_cast<std::size_t>(py * size.x + px)];
+                    ++kept;
+                }
+            const float expected = sum / static_cast<float>(kept);
+            const float got = blurred.pixel(x, size.y - 1 - y).r;
+            if (std::abs(got - expected) > 1.01f)
+                return stoa::CheckResult::fail(
+                    "the blur of random levels (0 to 255) on a " + std::to_string(size.x) + " x " + std::to_string(size.y) +
+                    " picture gives " + stoa::checkNumber(got, 1) + " at pixel (" + std::to_string(x) + ", " +
+                    std::to_string(y) + ") (gl_FragCoord, rows from the bottom); the mean of the " +
+                    std::to_string(kept) + " pixels of its 4 x 4 window inside the picture is " +
+                    stoa::checkNumber(expected, 1) + ". The window's offsets run from -2 to 1 on each axis, and "
+                    "only neighbours outside the picture are left out (docs: The blur)");
+        }
+    }
+    return stoa::CheckResult::pass("the blur is the mean of the 4 x 4 window (offsets -2 to 1) inside the picture at "
+                                   "every pixel of a 37 x 29 picture of random levels, edges and corners included");
 }
 
 } // namespace lab09

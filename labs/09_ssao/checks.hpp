@@ -24,4 +24,9 @@ stoa::CheckResult checkKernelInOrder();
 /// the lab's renderer and occlusion pass with a kernel and noise of its own.
 stoa::CheckResult checkRangeCheckFromThePoint(stoa::DeferredRenderer& renderer, stoa::AmbientOcclusionPass& occlusion);
 
+/// blur_footprint: the blur pass of a 37 x 29 picture of random raw levels is,
+/// at every pixel, the mean of its 4 x 4 window (offsets -2 to 1 on each axis)
+/// with the neighbours outside the picture left out (docs: "The blur").
+stoa::CheckResult checkBlurFootprint(stoa::DeferredRenderer& renderer, stoa::AmbientOcclusionPass& occlusion);
+
 } // namespace lab09

@@ -129,6 +129,11 @@ public:
             m_kernelChanged = true;   // the check sets a kernel of its own
             return lab09::checkRangeCheckFromThePoint(*m_renderer, *m_occlusion);
         }
+        if (spec.check == "blur_footprint") {
+            throwIfShaderStubs();   // it draws through the occlusion and blur programs
+            m_kernelChanged = true;   // the check sets a kernel of its own
+            return lab09::checkBlurFootprint(*m_renderer, *m_occlusion);
+        }
         return Lab::runCheck(spec);
     }
 
