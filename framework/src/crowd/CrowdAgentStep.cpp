@@ -68,12 +68,12 @@ private:
         case Condition::Kind::SmellsCrumb:
             return m_crowd.nearestPoint(m_crowd.m_crumbs, agent.position, type.sightRadius) >= 0;
         case Condition::Kind::Blocked:
-            return !m_crowd.walkable(agent.position + headingDirection(m_scratch, m_scratch.place, agent.heading) * condition.value);
+            return !m_crowd.walkable(agent.position + headingDirection(m_scratch, agent.heading) * condition.value);
         case Condition::Kind::TimeInState: return agent.timeInState >= condition.value;
         case Condition::Kind::Message:
             return condition.index >= 0 && (agent.messages & (1u << condition.index)) != 0;
         case Condition::Kind::Chance:
-            return m_crowd.randomFor(m_index, static_cast<std::uint32_t>(condition.line) * 2u + 1u) < condition.value;
+            return randomFrom(m_scratch.randomBase, static_cast<std::uint32_t>(condition.line) * 2u + 1u) < condition.value;
         }
         return false;
     }
@@ -179,15 +179,16 @@ glm::vec2 CrowdSimulation::targetPosition(int found, StepScratch& scratch) const
     return position;
 }
 
-glm::vec2 CrowdSimulation::headingDirection(StepScratch& scratch, std::size_t place, float heading) {
-    // direction() of the same bits gives the same bits: kept from the prefetch
-    // or the senses for the move, which turns by 0 first.
-    const std::size_t slot = place % StepScratch::kRing;
-    if (!sameBits(scratch.ringHeadings[slot], heading)) {
-        scratch.ringHeadings[slot] = heading;
-        scratch.ringDirections[slot] = direction(heading);
-    }
-    return scratch.ringDirections[slot];
+glm::vec2 CrowdSimulation::headingDirection(StepScratch& scratch, float heading) {
+    // direction() of the same bits gives the same bits.
+    for (int m = 0; m < scratch.memoCount; ++m)
+        if (sameBits(scratch.memoHeadings[m], heading)) return scratch.memoDirections[m];
+    const int slot = scratch.memoNext;
+    scratch.memoNext = (scratch.memoNext + 1) % StepScratch::kMemo;
+    scratch.memoCount = std::max(scratch.memoCount, slot + 1);
+    scratch.memoHeadings[slot] = heading;
+    scratch.memoDirections[slot] = direction(heading);
+    return scratch.memoDirections[slot];
 }
 
 bool CrowdSimulation::walkable(glm::vec2 xz) const {
@@ -209,69 +210,49 @@ void CrowdSimulation::kill(std::size_t victimIndex) {
     m_stepKills.push_back(m_startPositions[victimIndex]);
 }
 
-void CrowdSimulation::runAction(std::size_t index, CrowdAgent& agent, const Action& action, float speedScale,
-                                StepScratch& scratch) {
-    if (scratch.outcome && scratch.outcome->victim >= 0 && readsOthers(action.kind)) {
-        // After a kill the others are not as the parallel pass sees them: step it in its turn.
-        scratch.outcome->redo = true;
-        return;
-    }
+bool CrowdSimulation::seekTarget(std::size_t index, const CrowdAgent& agent, const Action& action,
+                                 StepScratch& scratch, glm::vec2& target) const {
     const AgentType& type = m_world.types[static_cast<std::size_t>(agent.type)];
-    const float pickReach = type.radius + reach;
-    const std::uint32_t salt = static_cast<std::uint32_t>(action.line) * 2u;
+    int found = -1;
+    if (action.index == Action::kSeekBase) {
+        if (m_world.bases.empty()) return false;
+        target = m_world.bases[static_cast<std::size_t>(agent.team)].position;
+        return true;
+    }
+    if (action.index == Action::kSeekSample) {
+        found = nearestPoint(m_samples, agent.position, type.sightRadius);
+        if (found >= 0) target = m_samples[static_cast<std::size_t>(found)];
+    } else if (action.index == Action::kSeekCrumb) {
+        found = nearestPoint(m_crumbs, agent.position, type.sightRadius);
+        if (found >= 0) target = m_crumbs[static_cast<std::size_t>(found)];
+    } else {
+        found = nearestAgentOfType(index, agent.position, action.index, type.sightRadius);
+        if (found >= 0) target = targetPosition(found, scratch);
+    }
+    return found >= 0;
+}
+
+void CrowdSimulation::followCrumbs(CrowdAgent& agent) const {
+    const AgentType& type = m_world.types[static_cast<std::size_t>(agent.type)];
+    // The crumb within sight farthest from the base leads away from it, towards the samples.
+    const glm::vec2 base = m_world.bases.empty() ? agent.position : m_world.bases[static_cast<std::size_t>(agent.team)].position;
+    int best = -1;
+    float bestFromBase = -1.0f;
+    const float sight2 = type.sightRadius * type.sightRadius;
+    for (std::size_t i = 0; i < m_crumbs.size(); ++i) {
+        if (distanceSquared(m_crumbs[i], agent.position) > sight2) continue;
+        const float fromBase = distanceSquared(m_crumbs[i], base);
+        if (fromBase > bestFromBase) {
+            best = static_cast<int>(i);
+            bestFromBase = fromBase;
+        }
+    }
+    if (best >= 0) headTowards(agent, m_crumbs[static_cast<std::size_t>(best)]);
+}
+
+void CrowdSimulation::runSharedListAction(CrowdAgent& agent, const Action& action) {
+    const float pickReach = m_world.types[static_cast<std::size_t>(agent.type)].radius + reach;
     switch (action.kind) {
-    case Action::Kind::Wander: {
-        const float turn = glm::radians(action.value) * m_world.step;
-        agent.heading = wrapAngle(agent.heading + (2.0f * randomFor(index, salt) - 1.0f) * turn);
-        agent.speed = type.speed * speedScale;
-        break;
-    }
-    case Action::Kind::Seek: {
-        int found = -1;
-        glm::vec2 target{0.0f};
-        if (action.index == Action::kSeekBase) {
-            if (!m_world.bases.empty()) {
-                target = m_world.bases[static_cast<std::size_t>(agent.team)].position;
-                found = 0;
-            }
-        } else if (action.index == Action::kSeekSample) {
-            found = nearestPoint(m_samples, agent.position, type.sightRadius);
-            if (found >= 0) target = m_samples[static_cast<std::size_t>(found)];
-        } else if (action.index == Action::kSeekCrumb) {
-            found = nearestPoint(m_crumbs, agent.position, type.sightRadius);
-            if (found >= 0) target = m_crumbs[static_cast<std::size_t>(found)];
-        } else {
-            found = nearestAgentOfType(index, agent.position, action.index, type.sightRadius);
-            if (found >= 0) target = targetPosition(found, scratch);
-        }
-        if (found >= 0) headTowards(agent, target);
-        agent.speed = type.speed * speedScale;
-        break;
-    }
-    case Action::Kind::Flee: {
-        const int found = nearestAgentOfType(index, agent.position, action.index, type.sightRadius);
-        if (found >= 0) headTowards(agent, 2.0f * agent.position - targetPosition(found, scratch));
-        agent.speed = type.speed * speedScale;
-        break;
-    }
-    case Action::Kind::FollowCrumbs: {
-        // The crumb within sight farthest from the base leads away from it, towards the samples.
-        const glm::vec2 base = m_world.bases.empty() ? agent.position : m_world.bases[static_cast<std::size_t>(agent.team)].position;
-        int best = -1;
-        float bestFromBase = -1.0f;
-        const float sight2 = type.sightRadius * type.sightRadius;
-        for (std::size_t i = 0; i < m_crumbs.size(); ++i) {
-            if (distanceSquared(m_crumbs[i], agent.position) > sight2) continue;
-            const float fromBase = distanceSquared(m_crumbs[i], base);
-            if (fromBase > bestFromBase) {
-                best = static_cast<int>(i);
-                bestFromBase = fromBase;
-            }
-        }
-        if (best >= 0) headTowards(agent, m_crumbs[static_cast<std::size_t>(best)]);
-        agent.speed = type.speed * speedScale;
-        break;
-    }
     case Action::Kind::PickUp: {
         if (agent.carrying) break;
         const int found = nearestPoint(m_samples, agent.position, pickReach);
@@ -303,6 +284,47 @@ void CrowdSimulation::runAction(std::size_t index, CrowdAgent& agent, const Acti
         if (found >= 0) m_crumbs.erase(m_crumbs.begin() + found);
         break;
     }
+    default: break;
+    }
+}
+
+void CrowdSimulation::runAction(std::size_t index, CrowdAgent& agent, const Action& action, float speedScale,
+                                StepScratch& scratch) {
+    if (scratch.outcome && scratch.outcome->victim >= 0 && readsOthers(action.kind)) {
+        // After a kill the others are not as the parallel pass sees them: step it in its turn.
+        scratch.outcome->redo = true;
+        return;
+    }
+    const AgentType& type = m_world.types[static_cast<std::size_t>(agent.type)];
+    const float pickReach = type.radius + reach;
+    const std::uint32_t salt = static_cast<std::uint32_t>(action.line) * 2u;
+    switch (action.kind) {
+    case Action::Kind::Wander: {
+        const float turn = glm::radians(action.value) * m_world.step;
+        agent.heading = wrapAngle(agent.heading + (2.0f * randomFrom(scratch.randomBase, salt) - 1.0f) * turn);
+        agent.speed = type.speed * speedScale;
+        break;
+    }
+    case Action::Kind::Seek: {
+        glm::vec2 target{0.0f};
+        if (seekTarget(index, agent, action, scratch, target)) headTowards(agent, target);
+        agent.speed = type.speed * speedScale;
+        break;
+    }
+    case Action::Kind::Flee: {
+        const int found = nearestAgentOfType(index, agent.position, action.index, type.sightRadius);
+        if (found >= 0) headTowards(agent, 2.0f * agent.position - targetPosition(found, scratch));
+        agent.speed = type.speed * speedScale;
+        break;
+    }
+    case Action::Kind::FollowCrumbs:
+        followCrumbs(agent);
+        agent.speed = type.speed * speedScale;
+        break;
+    case Action::Kind::PickUp:
+    case Action::Kind::Drop:
+    case Action::Kind::DropCrumb:
+    case Action::Kind::PickUpCrumb: runSharedListAction(agent, action); break;
     case Action::Kind::Stop: agent.speed = 0.0f; break;
     case Action::Kind::Send: {
         // Every living agent within the radius, found through the grid, hears it next step.
@@ -334,7 +356,7 @@ void CrowdSimulation::move(CrowdAgent& agent, StepScratch& scratch) {
     static const float turns[] = {0.0f, 0.25f * kPi, -0.25f * kPi, 0.5f * kPi, -0.5f * kPi, 0.75f * kPi, -0.75f * kPi};
     for (const float turn : turns) {
         const float heading = agent.heading + turn;
-        const glm::vec2 next = agent.position + headingDirection(scratch, scratch.place, heading) * distance;
+        const glm::vec2 next = agent.position + headingDirection(scratch, heading) * distance;
         if (walkable(next)) {
             if (turn != 0.0f) ++blocked;
             agent.heading = wrapAngle(heading);
@@ -347,7 +369,7 @@ void CrowdSimulation::move(CrowdAgent& agent, StepScratch& scratch) {
     agent.heading = wrapAngle(agent.heading + kPi);
 }
 
-void CrowdSimulation::prefetchPlace(std::size_t place, StepScratch& scratch) const {
+void CrowdSimulation::prefetchPlace(std::size_t place) const {
     // The agents' own states lie in index order, not in the step's: each is
     // fetched twice as far ahead as the map texels it will read.
     if (place + 2 * kPrefetchAhead < m_cellAgents.size()) {
@@ -355,39 +377,32 @@ void CrowdSimulation::prefetchPlace(std::size_t place, StepScratch& scratch) con
         __builtin_prefetch(far);
         __builtin_prefetch(far + sizeof(CrowdAgent) - 1);
     }
-    const std::size_t ahead = place + kPrefetchAhead;
-    if (ahead >= m_cellAgents.size()) return;
-    const GridEntry& entry = m_cellAgents[ahead];   // where it stands and heads now, before its turn
-    const CollisionMap& collision = m_maps.collision;
-    const auto texelOf = [](const GroundGrid& grid, glm::vec2 xz, float shift) -> std::size_t {
-        const glm::vec2 t = (xz - grid.footprintMin) / (grid.footprintMax - grid.footprintMin) *
-                                glm::vec2(grid.width, grid.height) - shift;
-        const int col = std::clamp(static_cast<int>(t.x), 0, grid.width - 1);
-        const int row = std::clamp(static_cast<int>(t.y), 0, std::max(0, grid.height - 2));
-        return static_cast<std::size_t>(row) * static_cast<std::size_t>(grid.width) + static_cast<std::size_t>(col);
+    if (place + kPrefetchAhead >= m_cellAgents.size()) return;
+    // The texel under it and the two rows of heights around it (heightAt() is
+    // bilinear between texel centres); the texel under it is the one the move reads.
+    const glm::vec2 position = m_cellAgents[place + kPrefetchAhead].position;
+    const auto texelOf = [&](const GroundMap& map) {
+        const glm::vec2 t = (position - map.min) * map.scale;
+        const int col = std::clamp(static_cast<int>(t.x), 0, map.lastCol);
+        const int row = std::clamp(static_cast<int>(t.y), 0, map.lastRow);
+        return static_cast<std::size_t>(row) * map.width + static_cast<std::size_t>(col);
     };
-    // The texels under it and `ahead` of it (the look-ahead and the move), and
-    // the two rows of heights around it (heightAt() is bilinear between texel centres).
-    __builtin_prefetch(collision.walkable.data() + texelOf(collision.grid, entry.position, 0.0f));
-    if (m_lookAhead > 0.0f) {
-        const glm::vec2 look = entry.position + headingDirection(scratch, ahead, entry.heading) * m_lookAhead;
-        __builtin_prefetch(collision.walkable.data() + texelOf(collision.grid, look, 0.0f));
-    }
-    const HeightField& heights = m_maps.heights;
-    if (heights.values.size() < 2) return;
-    const std::size_t texel = texelOf(heights.grid, entry.position, 0.5f);
-    const std::size_t width = static_cast<std::size_t>(heights.grid.width);
-    const std::size_t last = heights.values.size() - 1;
-    __builtin_prefetch(heights.values.data() + texel);
-    __builtin_prefetch(heights.values.data() + std::min(texel + 1, last));
-    __builtin_prefetch(heights.values.data() + std::min(texel + width, last));
-    __builtin_prefetch(heights.values.data() + std::min(texel + width + 1, last));
+    __builtin_prefetch(m_maps.collision.walkable.data() + texelOf(m_prefetchCollision));
+    if (m_prefetchHeights.width == 0) return;
+    const float* heights = m_maps.heights.values.data() + texelOf(m_prefetchHeights);
+    __builtin_prefetch(heights);
+    __builtin_prefetch(heights + m_prefetchHeights.width);
 }
 
 void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratch& scratch) {
     const float dt = m_world.step;
     const AgentType& type = m_world.types[static_cast<std::size_t>(agent.type)];
     const Behaviour& behaviour = m_world.behaviours[static_cast<std::size_t>(type.behaviourIndex)];
+    scratch.randomBase = randomBase(index);
+    scratch.memoCount = 1;
+    scratch.memoNext = 1;
+    scratch.memoHeadings[0] = m_memoHeadings[index];
+    scratch.memoDirections[0] = m_memoDirections[index];
     const Senses senses(*this, index, agent, scratch);
     float speedScale = 1.0f;
     static const std::string kStand = "stand";
@@ -435,6 +450,13 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
     if (agent.position != before) agent.y = height(agent.position);
     agent.timeInState += dt;
     agent.animationTime += dt;
+    // The direction of the heading it ends with, for its next step.
+    for (int m = 0; m < scratch.memoCount; ++m) {
+        if (sameBits(scratch.memoHeadings[m], agent.heading)) {
+            m_memoHeadings[index] = agent.heading;
+            m_memoDirections[index] = scratch.memoDirections[m];
+        }
+    }
 }
 
 } // namespace stoa

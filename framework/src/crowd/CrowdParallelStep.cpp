@@ -66,8 +66,7 @@ void CrowdSimulation::speculate(int thread, std::atomic<std::size_t>& next) {
         if (begin >= count) return;
         const std::size_t end = std::min(count, begin + kBlock);
         for (std::size_t k = begin; k < end; ++k) {
-            prefetchPlace(k, scratch);
-            scratch.place = k;
+            if (k + 2 * kPrefetchAhead < end) prefetchPlace(k);
             const std::size_t i = static_cast<std::size_t>(m_cellAgents[k].agent);
             Outcome& outcome = m_outcomes[k];
             outcome.agent = m_agents[i];
@@ -125,7 +124,6 @@ void CrowdSimulation::stepParallel() {
         if (outcomeHolds(i, m_outcomes[k])) {
             commit(i, m_outcomes[k]);
         } else {
-            m_serialScratch->place = k;
             stepAgent(i, m_agents[i], *m_serialScratch);
         }
     }

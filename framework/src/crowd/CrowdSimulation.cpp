@@ -2,6 +2,7 @@
 
 #include "CrowdMath.hpp"
 #include "CrowdStepState.hpp"
+#include "HugePages.hpp"
 #include "StepWorkers.hpp"
 
 #include <stoa/core/InputError.hpp>
@@ -54,13 +55,36 @@ CrowdSimulation::CrowdSimulation(const CrowdWorld& world, GroundMaps maps)
     }
     float sight = 1.0f;
     for (const AgentType& type : m_world.types) sight = std::max(sight, type.sightRadius);
-    m_cellSize = sight;
+    // Cells as wide as the longest sight, at most kMaxCells along a side: a
+    // wider ground has wider cells (up to 1,024 cells along a side, as many as
+    // before, the cells and so the order of the step are the same as before).
+    constexpr int kMaxCells = 2048;
     const glm::vec2 size = m_maps.collision.grid.footprintMax - m_maps.collision.grid.footprintMin;
-    m_cellsX = std::max(1, std::min(1024, static_cast<int>(std::ceil(size.x / m_cellSize))));
-    m_cellsZ = std::max(1, std::min(1024, static_cast<int>(std::ceil(size.y / m_cellSize))));
+    const float cellsAlong = std::max(size.x, size.y) / sight;
+    m_cellSize = cellsAlong > 1024.0f ? std::max(sight, std::max(size.x, size.y) / kMaxCells) : sight;
+    m_cellsX = std::max(1, std::min(kMaxCells, static_cast<int>(std::ceil(size.x / m_cellSize))));
+    m_cellsZ = std::max(1, std::min(kMaxCells, static_cast<int>(std::ceil(size.y / m_cellSize))));
     measureReaches();
+    moveOntoHugePages(m_maps.collision.walkable);
+    moveOntoHugePages(m_maps.heights.values);
+    const auto prefetched = [](const GroundGrid& grid, float shift, int rowsRead) {
+        GroundMap map;
+        map.scale = glm::vec2(grid.width, grid.height) / (grid.footprintMax - grid.footprintMin);
+        map.min = grid.footprintMin + shift / map.scale;
+        map.lastCol = std::max(0, grid.width - 1);
+        map.lastRow = std::max(0, grid.height - rowsRead);
+        map.width = grid.height >= rowsRead ? static_cast<std::size_t>(grid.width) : 0;
+        return map;
+    };
+    m_prefetchCollision = prefetched(m_maps.collision.grid, 0.0f, 1);
+    m_prefetchHeights = prefetched(m_maps.heights.grid, 0.5f, 2);
+    std::size_t agents = 0;
+    for (const SpawnArea& area : m_world.spawns) agents += static_cast<std::size_t>(std::max(0, area.count));
+    moveOntoHugePages(m_agents, agents);
     placeSamples();
     placeAgents();
+    m_memoHeadings.assign(m_agents.size(), std::numeric_limits<float>::quiet_NaN());
+    m_memoDirections.assign(m_agents.size(), glm::vec2(0.0f));
     m_trails.assign(m_agents.size() * trailLength, glm::vec2(0.0f));
     rebuildAgentGrid();
 }
@@ -100,12 +124,17 @@ void CrowdSimulation::resolveNames() {
     }
 }
 
-float CrowdSimulation::randomFor(std::size_t agent, std::uint32_t salt) const {
-    std::uint32_t x = hash32(m_world.seed * 0x9E3779B9u + static_cast<std::uint32_t>(agent));
-    x = hash32(x ^ static_cast<std::uint32_t>(m_step) * 0x85EBCA6Bu);
-    x = hash32(x ^ salt * 0xC2B2AE35u);
+std::uint32_t CrowdSimulation::randomBase(std::size_t agent) const {
+    const std::uint32_t x = hash32(m_world.seed * 0x9E3779B9u + static_cast<std::uint32_t>(agent));
+    return hash32(x ^ static_cast<std::uint32_t>(m_step) * 0x85EBCA6Bu);
+}
+
+float CrowdSimulation::randomFrom(std::uint32_t base, std::uint32_t salt) {
+    const std::uint32_t x = hash32(base ^ salt * 0xC2B2AE35u);
     return static_cast<float>(x >> 8u) * (1.0f / 16777216.0f);
 }
+
+float CrowdSimulation::randomFor(std::size_t agent, std::uint32_t salt) const { return randomFrom(randomBase(agent), salt); }
 
 int CrowdSimulation::messageIndex(const std::string& name) const {
     for (std::size_t i = 0; i < m_messages.size(); ++i)
@@ -295,10 +324,9 @@ void CrowdSimulation::step() {
     StepScratch& scratch = *m_serialScratch;
     for (std::size_t k = 0; k < m_cellAgents.size(); ++k) {
         // What an agent a few places on will read, on its way already.
-        prefetchPlace(k, scratch);
+        prefetchPlace(k);
         const std::size_t i = static_cast<std::size_t>(m_cellAgents[k].agent);
         if (!m_living[i]) continue;   // attacked earlier in this step
-        scratch.place = k;
         stepAgent(i, m_agents[i], scratch);
     }
     endStep();

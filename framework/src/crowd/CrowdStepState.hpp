@@ -33,15 +33,16 @@ struct CrowdSimulation::Outcome {
 /// Per thread: the actions list the lab's behaviour fills, and where the
 /// parallel pass records what an agent did to others (outcome null: the serial step).
 struct CrowdSimulation::StepScratch {
-    static constexpr std::size_t kRing = 16;   // > kPrefetchAhead
+    static constexpr int kMemo = 4;
 
     std::vector<const Action*> actions;
-    std::size_t place = 0;   // the place in the step order of the agent stepping
-    // The directions of headings, by place modulo kRing: filled by the prefetch
-    // a few agents ahead, read by the senses and the move. Only a memo of
-    // direction(heading), so a stale entry of the same heading is still right.
-    float ringHeadings[kRing] = {};
-    glm::vec2 ringDirections[kRing] = {};
+    std::uint32_t randomBase = 0;   // randomBase() of the agent stepping
+    // direction() of the headings the agent stepping has had this step (its
+    // last step's first): only a memo, so any entry of the same bits is right.
+    float memoHeadings[kMemo] = {};
+    glm::vec2 memoDirections[kMemo] = {};
+    int memoCount = 0;
+    int memoNext = 0;
     Outcome* outcome = nullptr;
     std::vector<std::pair<int, std::uint32_t>> heard;   // (hearer, message bit), in the order sent
 };

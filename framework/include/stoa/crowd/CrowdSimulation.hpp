@@ -145,11 +145,22 @@ private:
     void runAction(std::size_t index, CrowdAgent& agent, const Action& action, float speedScale,
                    StepScratch& scratch);
     void move(CrowdAgent& agent, StepScratch& scratch);
+    /// Where a <seek> heads the agent (false: nothing of the kind in sight).
+    bool seekTarget(std::size_t index, const CrowdAgent& agent, const Action& action, StepScratch& scratch,
+                    glm::vec2& target) const;
+    /// <pick-up>, <drop>, <drop-crumb>, <pick-up-crumb>: the samples and crumbs all agents share (serial step only).
+    void runSharedListAction(CrowdAgent& agent, const Action& action);
+    /// Heads the agent at the crumb within sight farthest from its base.
+    void followCrumbs(CrowdAgent& agent) const;
     /// The position of agent `found` as the agent stepping reads it (recorded in the parallel pass).
     glm::vec2 targetPosition(int found, StepScratch& scratch) const;
     /// Starts loading what the agent at `place` in the step order will read.
-    void prefetchPlace(std::size_t place, StepScratch& scratch) const;
-    static glm::vec2 headingDirection(StepScratch& scratch, std::size_t place, float heading);
+    void prefetchPlace(std::size_t place) const;
+    /// direction(heading), remembered: the agent's heading from the last step, the turns of this one.
+    static glm::vec2 headingDirection(StepScratch& scratch, float heading);
+    /// randomFor(agent, salt) is randomFrom(randomBase(agent), salt): the base once per agent and step.
+    std::uint32_t randomBase(std::size_t agent) const;
+    static float randomFrom(std::uint32_t base, std::uint32_t salt);
     void kill(std::size_t victim);
     bool walkable(glm::vec2 xz) const;
     float height(glm::vec2 xz) const;
@@ -197,6 +208,20 @@ private:
     std::vector<int> m_cellOf;            // per agent, scratch of rebuildAgentGrid()
     std::vector<glm::vec2> m_startPositions;   // per agent, where it stood when the step began
     std::vector<std::uint8_t> m_living;         // per agent, its `alive`, packed for the senses
+    // Per agent: a heading and its direction() (the heading it ended its last
+    // step with, mostly), so that a heading's sine and cosine are computed once.
+    std::vector<float> m_memoHeadings;
+    std::vector<glm::vec2> m_memoDirections;
+
+    // The maps as the prefetch reads them: texel = (xz - min) * scale, clamped.
+    struct GroundMap {
+        glm::vec2 min{0.0f};
+        glm::vec2 scale{0.0f};
+        int lastCol = 0, lastRow = 0;
+        std::size_t width = 0;   // 0: nothing to prefetch
+    };
+    GroundMap m_prefetchCollision;
+    GroundMap m_prefetchHeights;   // shifted half a texel, its last row one up (two rows read)
 
     std::unique_ptr<StepScratch> m_serialScratch;
     std::vector<StepScratch> m_threadScratch;    // one per thread of the parallel step
