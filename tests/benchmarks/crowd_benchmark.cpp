@@ -1,15 +1,22 @@
-// crowd_benchmark [--runs R] [--steps S] [--frames F] [--agents N] [--no-render]: lab 10's
-// crowd with the solutions' code, on one core.
+// crowd_benchmark [--runs R] [--steps S] [--frames F] [--agents N] [--threads T] [--no-render]:
+// lab 10's crowd with the solutions' code, on one core and on T (default: all the machine's).
 //
 // The simulation: the predators_prey world (assets/crowds/predators_prey.xml:
 // its wolves' state machine and goats' subsumption stack, its hills and ponds)
-// tiled k x k, maps and spawn areas repeated per 60 m tile, with 1,000, 10,000
-// and 100,000 agents shared over the tiles (a tenth wolves), so that the
-// density and the obstacles per square metre stay the example's (44 agents per
-// tile at most: 1,000 on 5 x 5 tiles, 10,000 on 16 x 16, 100,000 on 48 x 48;
-// --agents N times only that one of the three). After 30 warm-up steps, R runs
-// (default 5) of S steps (default 30) each; the median run is printed as
-// milliseconds per step and nanoseconds per agent per step.
+// tiled k x k, maps and spawn areas repeated per 60 m tile, with 1,000, 10,000,
+// 100,000 and 1,000,000 agents shared over the tiles (a tenth wolves), so that
+// the density and the obstacles per square metre stay the example's (44 agents
+// per tile at most: 1,000 on 5 x 5 tiles, 10,000 on 16 x 16, 100,000 on
+// 48 x 48, 1,000,000 on 151 x 151 with maps of 19,328 x 19,328 texels, 1.9 GB;
+// --agents N times only that one). After 30 warm-up steps, R runs (default 7)
+// of S steps (default 30) each, S scaled down above 10,000 agents to as many
+// agent-steps (1,000,000 agents: 3 warm-up steps, runs of 2 steps); the median
+// run is printed as milliseconds per step (wall clock; and the CPU time of the
+// stepping thread, which a shared machine's other work does not inflate) and
+// nanoseconds per agent per step. The same world is then stepped as far on T
+// threads (CrowdSimulation::setThreads), timed the same way, and its agents
+// compared with the serial run's bit for bit: "equal" says whether every
+// field of every agent and the statistics agree (the program fails if not).
 //
 // Where the time goes, at 10,000 agents: the same with the goats' <send>
 // (the bleat) taken out, with every behaviour cut down to its wandering (no
@@ -50,6 +57,7 @@
 #include <exception>
 #include <functional>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -61,11 +69,13 @@ using namespace stoa;
 
 constexpr float kTile = 60.0f;   // the example's footprint, metres
 
-double processSeconds() {
+double cpuSeconds(clockid_t clock) {
     timespec now{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+    clock_gettime(clock, &now);
     return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
 }
+
+double processSeconds() { return cpuSeconds(CLOCK_PROCESS_CPUTIME_ID); }
 
 struct Example {
     CrowdWorld world;
@@ -159,8 +169,10 @@ void removeSend(CrowdWorld& world) {
 
 struct StepTiming {
     double msPerStep = 0.0;
+    double cpuMsPerStep = 0.0;   // the stepping thread's (serial) or the process's (parallel)
     std::size_t agents = 0;
     CrowdStatistics statistics;
+    std::vector<CrowdAgent> finalAgents;   // kept when asked, for the comparison
 };
 
 // A simulation on `code` (CrowdSimulation takes the student's functions from the
@@ -171,16 +183,46 @@ CrowdSimulation crowdWith(const CrowdWorld& world, const GroundMaps& maps, const
     return CrowdSimulation(world, maps);
 }
 
-StepTiming timeSteps(const Example& e, int runs, int steps, const CrowdFunctions& code) {
+StepTiming timeSteps(const Example& e, int runs, int steps, const CrowdFunctions& code, int threads = 1,
+                     int warmUp = 30, bool keepAgents = false) {
     CrowdSimulation crowd = crowdWith(e.world, e.maps, code);
-    crowd.advance(30);   // warm-up: caches, the herd under way
-    std::vector<double> perStep;
+    crowd.setThreads(threads);
+    crowd.advance(warmUp);   // warm-up: caches, the herd under way
+    const clockid_t cpuClock = threads > 1 ? CLOCK_PROCESS_CPUTIME_ID : CLOCK_THREAD_CPUTIME_ID;
+    std::vector<double> perStep, cpuPerStep;
     for (int run = 0; run < runs; ++run) {
+        const double cpu = cpuSeconds(cpuClock);
         const Clock::time_point start = Clock::now();
         crowd.advance(steps);
         perStep.push_back(milliseconds(start, Clock::now()) / steps);
+        cpuPerStep.push_back((cpuSeconds(cpuClock) - cpu) * 1000.0 / steps);
     }
-    return {median(perStep), crowd.agents().size(), crowd.statistics()};
+    StepTiming timing{median(perStep), median(cpuPerStep), crowd.agents().size(), crowd.statistics(), {}};
+    if (keepAgents) timing.finalAgents = crowd.agents();
+    return timing;
+}
+
+bool sameBits(const void* a, const void* b, std::size_t bytes) { return std::memcmp(a, b, bytes) == 0; }
+
+/// Every field of every agent and the statistics, bit for bit.
+bool sameCrowd(const StepTiming& a, const StepTiming& b) {
+    if (a.finalAgents.size() != b.finalAgents.size()) return false;
+    for (std::size_t i = 0; i < a.finalAgents.size(); ++i) {
+        const CrowdAgent& p = a.finalAgents[i];
+        const CrowdAgent& q = b.finalAgents[i];
+        const bool same = p.type == q.type && sameBits(&p.position, &q.position, sizeof p.position) &&
+                          sameBits(&p.y, &q.y, 4) && sameBits(&p.heading, &q.heading, 4) && sameBits(&p.speed, &q.speed, 4) &&
+                          p.state == q.state && sameBits(&p.timeInState, &q.timeInState, 4) &&
+                          sameBits(&p.animationTime, &q.animationTime, 4) && p.animation == q.animation &&
+                          p.carrying == q.carrying && p.alive == q.alive && sameBits(&p.deadFor, &q.deadFor, 4) &&
+                          sameBits(&p.walkedSinceCrumb, &q.walkedSinceCrumb, 4) && p.messages == q.messages &&
+                          p.nextMessages == q.nextMessages;
+        if (!same) return false;
+    }
+    const CrowdStatistics& s = a.statistics;
+    const CrowdStatistics& t = b.statistics;
+    return s.living == t.living && s.attacks == t.attacks && s.blockedMoves == t.blockedMoves &&
+           s.samplesOnGround == t.samplesOnGround && s.crumbs == t.crumbs && s.delivered == t.delivered;
 }
 
 // The counted run: every lab call counted, every sense timed by its kind.
@@ -248,23 +290,41 @@ void measureClockOverhead() {
     g_clockOverheadNs = least;
 }
 
-void simulationFigures(int runs, int steps, int onlyAgents) {
-    const Example example = loadExample();
-    std::printf("simulation: predators_prey tiled (60 m tiles of %dx%d texels, 44 agents per tile, a tenth wolves), "
-                "one core, %d warm-up steps, median of %d runs of %d steps\n",
-                example.maps.collision.grid.width, example.maps.collision.grid.height, 30, runs, steps);
-    std::printf("  %9s %8s %12s %14s %9s %9s %8s\n", "agents", "tiles", "ms per step", "ns per agent", "living",
-                "attacks", "blocked");
-    for (const int agents : {1000, 10000, 100000}) {
+/// Serial and parallel at 1,000 to 1,000,000 agents; false if a parallel crowd differs from the serial one.
+bool scalingFigures(const Example& example, int runs, int steps, int onlyAgents, int threads) {
+    std::printf("  %9s %8s %9s %9s %9s %9s %8s %7s %9s %8s %8s %6s\n", "agents", "tiles", "serial ms", "CPU ms",
+                "ns/agent", "parallel", "CPU ms", "speedup", "living", "attacks", "blocked", "equal");
+    bool allEqual = true;
+    for (const int agents : {1000, 10000, 100000, 1000000}) {
         if (onlyAgents > 0 && agents != onlyAgents) continue;
         const Example e = tiledWorld(example, agents);
-        const StepTiming t = timeSteps(e, runs, steps, studentCode().crowds);
+        // As many agent-steps per run above 10,000 agents as at 10,000.
+        const int runSteps = agents > 10000 ? std::max(2, steps * 10000 / agents) : steps;
+        const int warmUp = agents > 100000 ? 3 : 30;
+        const StepTiming serial = timeSteps(e, runs, runSteps, studentCode().crowds, 1, warmUp, true);
+        const StepTiming parallel = timeSteps(e, runs, runSteps, studentCode().crowds, threads, warmUp, true);
+        const bool equal = sameCrowd(serial, parallel);
+        allEqual = allEqual && equal;
         const int tiles = static_cast<int>(std::lround((e.world.ground.footprintMax.x - e.world.ground.footprintMin.x) / kTile));
-        std::printf("  %9zu %5dx%-2d %12.3f %14.0f %9d %9d %8d\n", t.agents, tiles, tiles, t.msPerStep,
-                    t.msPerStep * 1e6 / static_cast<double>(t.agents), t.statistics.living, t.statistics.attacks,
-                    t.statistics.blockedMoves);
+        std::printf("  %9zu %5dx%-3d %9.3f %9.3f %9.0f %9.3f %8.3f %6.2fx %9d %8d %8d %6s\n", serial.agents, tiles, tiles,
+                    serial.msPerStep, serial.cpuMsPerStep, serial.msPerStep * 1e6 / static_cast<double>(serial.agents),
+                    parallel.msPerStep, parallel.cpuMsPerStep, serial.msPerStep / parallel.msPerStep,
+                    serial.statistics.living, serial.statistics.attacks, serial.statistics.blockedMoves,
+                    equal ? "yes" : "NO");
         std::fflush(stdout);
     }
+    std::printf("  serial and parallel crowds %s\n", allEqual ? "equal bit for bit at every size"
+                                                              : "DIFFER: the parallel step is broken");
+    return allEqual;
+}
+
+bool simulationFigures(int runs, int steps, int onlyAgents, int threads) {
+    const Example example = loadExample();
+    std::printf("simulation: predators_prey tiled (60 m tiles of %dx%d texels, 44 agents per tile, a tenth wolves), "
+                "%d warm-up steps, median of %d runs of %d steps; serial on one core, parallel on %d threads\n",
+                example.maps.collision.grid.width, example.maps.collision.grid.height, 30, runs, steps, threads);
+    const bool equal = scalingFigures(example, runs, steps, onlyAgents, threads);
+    if (onlyAgents > 0 && onlyAgents != 10000) return equal;
 
     std::printf("where the time goes at 10,000 agents (ms per step, median of %d runs):\n", runs);
     const Example full = tiledWorld(example, 10000);
@@ -302,6 +362,7 @@ void simulationFigures(int runs, int steps, int onlyAgents) {
         const double ms = g_counters.senseNs[static_cast<std::size_t>(k)] * perStep * 1e-6;
         std::printf("    %-14s %9.0f calls %8.3f ms %8.0f ns each\n", kKindNames[k], calls, ms, ms * 1e6 / calls);
     }
+    return equal;
 }
 
 void renderFigures(int frames) {
@@ -369,7 +430,8 @@ void renderFigures(int frames) {
 } // namespace
 
 int main(int argc, char** argv) {
-    int runs = 5, steps = 30, frames = 7, onlyAgents = 0;
+    int runs = 7, steps = 30, frames = 7, onlyAgents = 0;
+    int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     bool render = true;
     for (int i = 1; i < argc; ++i) {
         int* value = nullptr;
@@ -377,13 +439,15 @@ int main(int argc, char** argv) {
         else if (std::strcmp(argv[i], "--steps") == 0) value = &steps;
         else if (std::strcmp(argv[i], "--frames") == 0) value = &frames;
         else if (std::strcmp(argv[i], "--agents") == 0) value = &onlyAgents;
+        else if (std::strcmp(argv[i], "--threads") == 0) value = &threads;
         else if (std::strcmp(argv[i], "--no-render") == 0) {
             render = false;
             continue;
         }
-        if (!value || i + 1 >= argc || (*value = std::atoi(argv[++i])) < 1 || *value > 100000) {
-            std::fprintf(stderr, "usage: crowd_benchmark [--runs R] [--steps S] [--frames F] [--agents N] [--no-render]\n"
-                                 "  defaults: 5 runs of 30 steps, 7 frames\n");
+        if (!value || i + 1 >= argc || (*value = std::atoi(argv[++i])) < 1 || *value > 1000000) {
+            std::fprintf(stderr, "usage: crowd_benchmark [--runs R] [--steps S] [--frames F] [--agents N] [--threads T] "
+                                 "[--no-render]\n"
+                                 "  defaults: 7 runs of 30 steps, 7 frames, as many threads as the machine has\n");
             return 2;
         }
     }
@@ -391,8 +455,9 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) std::printf(" %s", argv[i]);
     std::printf("\n");
     try {
-        simulationFigures(runs, steps, onlyAgents);
+        const bool equal = simulationFigures(runs, steps, onlyAgents, threads);
         if (render) renderFigures(frames);
+        if (!equal) return 1;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "crowd_benchmark: %s\n", error.what());
         return 1;

@@ -6,6 +6,9 @@
 // which the student release leaves out). Checked:
 //   - the same world and seed give bit-identical agents, samples and crumbs
 //     after 500 steps in two runs; another seed gives other agents;
+//   - the parallel step (setThreads(2), setThreads(3)) gives the serial crowd
+//     bit for bit, every 50 steps of 300, in a crowd dense enough for kills
+//     and in the explorers' world (which steps on one thread);
 //   - no living agent ever stands on a texel the collision map blocks (a
 //     look-up in double, every step of 400 in both worlds, and at the start);
 //   - every living agent's y is heightAt(position) after every step (of
@@ -214,6 +217,36 @@ TEST_CASE("Crowd: the same world and seed give bit-identical agents after 500 st
         for (int i = 0; i < 500; ++i) second.step();
         REQUIRE(first.stepCount() == 500);
         requireIdentical(first, second);
+    }
+}
+
+TEST_CASE("Crowd: the parallel step gives the serial crowd bit for bit", "[crowd][simulation][parallel]") {
+    // The predators and prey ten times as many, the wolves placed among the
+    // goats, so that in 300 steps wolves kill goats stepped on other threads,
+    // goats bleat to goats across them, and seekers read positions the step
+    // has changed; then the explorers, whose samples and crumbs keep them on one thread.
+    Example dense = example("predators_prey.xml");
+    for (SpawnArea& area : dense.world.spawns) {
+        area.count *= 10;
+        area.centre = dense.world.spawns.front().centre;
+        area.radius = dense.world.spawns.front().radius;
+    }
+    const Example explorers = example("mars_explorers.xml");
+    for (const Example* e : {static_cast<const Example*>(&dense), &explorers}) {
+        for (const int threads : {2, 3}) {
+            INFO(e->world.file.filename().string() << " on " << threads << " threads");
+            CrowdSimulation serial = crowdWith(e->world, e->maps, testCode());
+            CrowdSimulation parallel = crowdWith(e->world, e->maps, testCode());
+            parallel.setThreads(threads);
+            REQUIRE(parallel.threads() == threads);
+            for (int round = 0; round < 6; ++round) {
+                serial.advance(50);
+                parallel.advance(50);
+                INFO("after " << serial.stepCount() << " steps");
+                requireIdentical(serial, parallel);
+            }
+            if (e == &dense) CHECK(serial.statistics().attacks > 10);
+        }
     }
 }
 

@@ -167,7 +167,12 @@ int CrowdSimulation::nearestPoint(const std::vector<glm::vec2>& points, glm::vec
 }
 
 glm::vec2 CrowdSimulation::targetPosition(int found, StepScratch& scratch) const {
-    const glm::vec2 position = m_agents[static_cast<std::size_t>(found)].position;
+    // Where the agent whose turn it is sees it: moved if its turn has come
+    // (in the parallel step, agents after it have moved ahead of theirs).
+    const auto other = static_cast<std::size_t>(found);
+    if (!scratch.outcome)
+        return m_places[other] < static_cast<int>(m_place) ? m_agents[other].position : m_startPositions[other];
+    const glm::vec2 position = m_startPositions[other];
     if (Outcome* outcome = scratch.outcome) {
         // It may have moved by the agent's turn: the turn checks that it has not.
         if (outcome->targetCount == Outcome::kMaxReads) outcome->redo = true;
@@ -200,6 +205,8 @@ float CrowdSimulation::height(glm::vec2 xz) const {
 }
 
 void CrowdSimulation::kill(std::size_t victimIndex) {
+    // One whose turn is still to come has stepped ahead of it: it never does.
+    if (m_committing && m_places[victimIndex] > static_cast<int>(m_place)) undoSpeculation(victimIndex);
     CrowdAgent& victim = m_agents[victimIndex];
     victim.alive = false;
     m_living[victimIndex] = 0;

@@ -6,19 +6,20 @@
 // an agent reads (the grid of where all stood when the step began, its own
 // state, the maps, the random numbers of (agent, step)) no agent changes
 // during a step. So:
-//   1. every thread steps agents ahead of their turn, each on a copy and
-//      reading the others as they stood when the step began, and records what
-//      it did to the others (the agent it attacked, the messages it sent) and
-//      the positions of others it read;
+//   1. every thread steps agents ahead of their turn, in place (keeping a copy
+//      of each as it was), reading the others as they stood when the step
+//      began, and records what each did to the others (the agent it
+//      attacked, the messages it sent) and the positions of others it read;
 //   2. the caller then goes through the agents in the serial order: an agent
-//      attacked earlier in the step is passed over (as in the serial step);
-//      one whose copy read a position that has changed since, or stood within
-//      reach of an agent attacked earlier in this step (its senses might have
-//      seen that one alive), or whose pass could not record what it did, is
-//      stepped again there, in place, exactly as the serial step does; every
-//      other agent takes its copy, and its attack and messages are applied.
-// An agent's copy and the serial step read the same values, so they compute
-// the same bits. Worlds with samples or crumbs step serially: every pick-up
+//      attacked earlier in the step is put back as it was and passed over (as
+//      in the serial step); one that read a position that has changed since,
+//      or stood within reach of an agent attacked earlier in this step (its
+//      senses might have seen that one alive), or whose pass could not record
+//      what it did, is put back and stepped again there, exactly as the serial
+//      step does; every other agent keeps its step, and its attack and
+//      messages are applied.
+// An agent stepped ahead and the serial step read the same values, so they
+// compute the same bits. Worlds with samples or crumbs step serially: every pick-up
 // and drop changes a list all agents read.
 
 #include <stoa/crowd/CrowdSimulation.hpp>
@@ -69,7 +70,7 @@ void CrowdSimulation::speculate(int thread, std::atomic<std::size_t>& next) {
             if (k + 2 * kPrefetchAhead < end) prefetchPlace(k);
             const std::size_t i = static_cast<std::size_t>(m_cellAgents[k].agent);
             Outcome& outcome = m_outcomes[k];
-            outcome.agent = m_agents[i];
+            outcome.before = m_agents[i];
             outcome.victim = -1;
             outcome.targetCount = 0;
             outcome.thread = thread;
@@ -78,7 +79,7 @@ void CrowdSimulation::speculate(int thread, std::atomic<std::size_t>& next) {
             outcome.redo = false;
             scratch.outcome = &outcome;
             try {
-                stepAgent(i, outcome.agent, scratch);
+                stepAgent(i, m_agents[i], scratch);
             } catch (const std::exception&) {
                 outcome.redo = true;   // thrown again in its turn, by the serial step
             }
@@ -89,9 +90,12 @@ void CrowdSimulation::speculate(int thread, std::atomic<std::size_t>& next) {
 
 bool CrowdSimulation::outcomeHolds(std::size_t index, const Outcome& outcome) const {
     if (outcome.redo) return false;
-    for (int t = 0; t < outcome.targetCount; ++t)
-        if (!sameBits(m_agents[static_cast<std::size_t>(outcome.targets[t])].position, outcome.targetPositions[t]))
+    // The positions it read as the step began: still so in its turn?
+    for (int t = 0; t < outcome.targetCount; ++t) {
+        const auto other = static_cast<std::size_t>(outcome.targets[t]);
+        if (m_places[other] < static_cast<int>(m_place) && !sameBits(m_agents[other].position, outcome.targetPositions[t]))
             return false;
+    }
     // A victim earlier in this step within reach: its senses may have seen it alive.
     const float reach = m_queryReach * 1.001f + 0.01f;
     const glm::vec2 from = m_startPositions[index];
@@ -100,11 +104,14 @@ bool CrowdSimulation::outcomeHolds(std::size_t index, const Outcome& outcome) co
     return true;
 }
 
-void CrowdSimulation::commit(std::size_t index, const Outcome& outcome) {
+void CrowdSimulation::undoSpeculation(std::size_t index) {
     CrowdAgent& agent = m_agents[index];
     const std::uint32_t heard = agent.nextMessages;   // sent to it earlier in this step
-    agent = outcome.agent;
+    agent = m_outcomes[static_cast<std::size_t>(m_places[index])].before;
     agent.nextMessages = heard;
+}
+
+void CrowdSimulation::commit(const Outcome& outcome) {
     const StepScratch& scratch = m_threadScratch[static_cast<std::size_t>(outcome.thread)];
     for (std::size_t h = outcome.heardBegin; h < outcome.heardEnd; ++h)
         m_agents[static_cast<std::size_t>(scratch.heard[h].first)].nextMessages |= scratch.heard[h].second;
@@ -118,15 +125,19 @@ void CrowdSimulation::stepParallel() {
     std::atomic<std::size_t> next{0};
     m_workers->run([&](int thread) { speculate(thread, next); });
     for (StepScratch& scratch : m_threadScratch) scratch.outcome = nullptr;
+    m_committing = true;
     for (std::size_t k = 0; k < m_cellAgents.size(); ++k) {
         const std::size_t i = static_cast<std::size_t>(m_cellAgents[k].agent);
-        if (!m_living[i]) continue;   // attacked earlier in this step
+        if (!m_living[i]) continue;   // attacked earlier in this step (and undone then)
+        m_place = k;
         if (outcomeHolds(i, m_outcomes[k])) {
-            commit(i, m_outcomes[k]);
+            commit(m_outcomes[k]);
         } else {
+            undoSpeculation(i);
             stepAgent(i, m_agents[i], *m_serialScratch);
         }
     }
+    m_committing = false;
     endStep();
 }
 

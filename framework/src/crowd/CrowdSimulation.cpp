@@ -245,6 +245,7 @@ void CrowdSimulation::rebuildAgentGrid() {
     m_typeCellStart.assign(types * cells + 1, 0);
     m_cellOf.resize(m_agents.size());
     m_startPositions.resize(m_agents.size());
+    m_places.assign(m_agents.size(), -1);
     m_living.resize(m_agents.size());
     for (std::size_t i = 0; i < m_agents.size(); ++i) {
         m_startPositions[i] = m_agents[i].position;
@@ -267,6 +268,7 @@ void CrowdSimulation::rebuildAgentGrid() {
         if (m_cellOf[i] < 0) continue;
         const auto cell = static_cast<std::size_t>(m_cellOf[i]);
         const GridEntry entry{m_agents[i].position, m_agents[i].heading, m_agents[i].type, static_cast<int>(i)};
+        m_places[i] = m_cellStart[cell];
         m_cellAgents[static_cast<std::size_t>(m_cellStart[cell]++)] = entry;
         m_typeCellAgents[static_cast<std::size_t>(m_typeCellStart[static_cast<std::size_t>(entry.type) * cells + cell]++)] = entry;
     }
@@ -280,13 +282,12 @@ void CrowdSimulation::rebuildAgentGrid() {
 void CrowdSimulation::stepTheDead() {
     const float dt = m_world.step;
     m_stepKills.clear();
-    for (CrowdAgent& agent : m_agents) {
-        agent.messages = agent.nextMessages;
-        agent.nextMessages = 0;
-    }
-    // The dead first, in index order: a comeback waits for the next step to act.
+    // What was sent last step is heard now; the dead first, in index order (a
+    // comeback waits for the next step to act). One pass: neither reads the other.
     for (std::size_t i = 0; i < m_agents.size(); ++i) {
         CrowdAgent& agent = m_agents[i];
+        agent.messages = agent.nextMessages;
+        agent.nextMessages = 0;
         if (agent.alive) continue;
         agent.deadFor += dt;
         if (agent.deadFor < respawnSeconds) continue;
@@ -327,6 +328,7 @@ void CrowdSimulation::step() {
         prefetchPlace(k);
         const std::size_t i = static_cast<std::size_t>(m_cellAgents[k].agent);
         if (!m_living[i]) continue;   // attacked earlier in this step
+        m_place = k;
         stepAgent(i, m_agents[i], scratch);
     }
     endStep();

@@ -14,12 +14,12 @@
 
 namespace stoa {
 
-/// One agent stepped ahead of its turn: its state after the step and what it
-/// did to the others, taken in its turn if what it read then is still so.
+/// One agent stepped ahead of its turn (in place) and what it did to the
+/// others, kept in its turn if what it read then is still so.
 struct CrowdSimulation::Outcome {
     static constexpr int kMaxReads = 2;
 
-    CrowdAgent agent;                    // the agent after its step (nextMessages aside)
+    CrowdAgent before;                   // the agent as the step began: to step it again, or to undo it
     int victim = -1;                     // the agent it attacked, if any
     int targets[kMaxReads] = {};         // agents whose position it read (seek, flee) ...
     glm::vec2 targetPositions[kMaxReads] = {};   // ... and what it read

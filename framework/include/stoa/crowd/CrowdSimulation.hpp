@@ -177,7 +177,9 @@ private:
     void stepParallel();
     void speculate(int thread, std::atomic<std::size_t>& next);
     bool outcomeHolds(std::size_t index, const Outcome& outcome) const;
-    void commit(std::size_t index, const Outcome& outcome);
+    void commit(const Outcome& outcome);
+    /// Agent `index` back as the step began (its messages of this step kept).
+    void undoSpeculation(std::size_t index);
 
     CrowdWorld m_world;
     GroundMaps m_maps;
@@ -207,6 +209,9 @@ private:
     std::vector<GridEntry> m_typeCellAgents;
     std::vector<int> m_cellOf;            // per agent, scratch of rebuildAgentGrid()
     std::vector<glm::vec2> m_startPositions;   // per agent, where it stood when the step began
+    std::vector<int> m_places;                 // per agent, its place in the step's order (m_cellAgents), -1: none
+    std::size_t m_place = 0;                   // the place of the agent whose turn it is
+    bool m_committing = false;                 // in the parallel step's second pass: the agents after m_place are stepped already
     std::vector<std::uint8_t> m_living;         // per agent, its `alive`, packed for the senses
     // Per agent: a heading and its direction() (the heading it ended its last
     // step with, mostly), so that a heading's sine and cosine are computed once.
