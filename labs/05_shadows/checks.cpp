@@ -149,6 +149,44 @@ stoa::CheckResult checkCascadeDepthReachesOccluders() {
     return stoa::CheckResult::pass("every corner of the scene's box lies behind the box's near side, as seen from the light");
 }
 
+stoa::CheckResult checkCascadeHoldsItsSlice() {
+    const glm::vec3 sceneMin(-40.0f, 0.0f, -40.0f), sceneMax(40.0f, 12.0f, 40.0f);
+    const glm::mat4 cameras[] = {
+        glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.7f, 0.0f)),
+        glm::translate(glm::mat4(1.0f), glm::vec3(3.0f, 2.0f, -5.0f)) *
+            glm::rotate(glm::mat4(1.0f), glm::radians(35.0f), glm::vec3(0.0f, 1.0f, 0.0f)) *
+            glm::rotate(glm::mat4(1.0f), glm::radians(-20.0f), glm::vec3(1.0f, 0.0f, 0.0f)),
+    };
+    for (const glm::mat4& camera : cameras) {
+        const std::array<glm::vec3, 8> corners = transformed(sliceShape(), camera);
+        glm::vec3 centre(0.0f);
+        for (const glm::vec3& corner : corners) centre += corner / 8.0f;
+        std::size_t farthest = 0;
+        for (std::size_t k = 1; k < 8; ++k)
+            if (glm::length(corners[k] - centre) > glm::length(corners[farthest] - centre)) farthest = k;
+        // The sun as usual, and a sun that shines straight from the centre through the
+        // corner furthest from it: that corner is then as far from the light as the
+        // slice's bounding sphere reaches.
+        const glm::vec3 lights[] = {glm::vec3(0.45f, -1.0f, 0.3f), glm::normalize(corners[farthest] - centre)};
+        for (const glm::vec3& light : lights) {
+            const glm::mat4 matrix = stoa::cascadeLightMatrix(light, corners, 1024, sceneMin, sceneMax);
+            for (const glm::vec3& corner : corners) {
+                const glm::vec4 clip = matrix * glm::vec4(corner, 1.0f);
+                const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+                if (std::max({std::abs(ndc.x), std::abs(ndc.y), std::abs(ndc.z)}) > 1.0001f)
+                    return stoa::CheckResult::fail(
+                        "with the light along (" + number(light.x) + ", " + number(light.y) + ", " + number(light.z) +
+                        "), the slice's corner (" + number(corner.x) + ", " + number(corner.y) + ", " + number(corner.z) +
+                        ") lands at (" + number(ndc.x, 3) + ", " + number(ndc.y, 3) + ", " + number(ndc.z, 3) +
+                        ") in the cascade's box, outside [-1, 1]: the box must hold the slice's bounding sphere, its "
+                        "far side the sphere's (widened a little, never narrowed) (docs: Fitting each cascade)");
+            }
+        }
+    }
+    return stoa::CheckResult::pass("the cascade's box holds every corner of two slices, also with the light shining "
+                                   "through the corner furthest from the slice's centre");
+}
+
 stoa::CheckResult checkTexelSnapping() {
     const glm::vec3 light(0.45f, -1.0f, 0.3f);
     const glm::vec3 sceneMin(-40.0f, 0.0f, -40.0f), sceneMax(40.0f, 12.0f, 40.0f);

@@ -25,6 +25,12 @@ stoa::CheckResult checkSliceCorners();
 /// outside the slice still casts into it (docs: "Fitting each cascade").
 stoa::CheckResult checkCascadeDepthReachesOccluders();
 
+/// cascade_holds_its_slice: every corner of the slice lands inside
+/// cascadeLightMatrix()'s box, also when the light shines from the slice's
+/// centre through its furthest corner, so that the corner is as far from the
+/// light as the bounding sphere reaches (docs: "Fitting each cascade").
+stoa::CheckResult checkCascadeHoldsItsSlice();
+
 /// texel_snapping: as the slice moves by less than a texel, a fixed world point
 /// moves through the map by whole texels only; as the slice turns, the box keeps
 /// its size (docs: "Texel snapping").

@@ -227,6 +227,7 @@ public:
         if (spec.check == "depth_pass_both_faces") return lab05::checkDepthPassBothFaces(*m_depthProgram);
         if (spec.check == "slice_corners") return lab05::checkSliceCorners();
         if (spec.check == "cascade_depth_reaches_occluders") return lab05::checkCascadeDepthReachesOccluders();
+        if (spec.check == "cascade_holds_its_slice") return lab05::checkCascadeHoldsItsSlice();
         if (spec.check == "texel_snapping") return lab05::checkTexelSnapping();
         return Lab::runCheck(spec);
     }
