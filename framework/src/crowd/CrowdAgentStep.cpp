@@ -73,7 +73,7 @@ private:
         case Condition::Kind::Message:
             return condition.index >= 0 && (agent.messages & (1u << condition.index)) != 0;
         case Condition::Kind::Chance:
-            return randomFrom(m_scratch.randomBase, static_cast<std::uint32_t>(condition.line) * 2u + 1u) < condition.value;
+            return m_crowd.randomOf(m_scratch, m_index, static_cast<std::uint32_t>(condition.line) * 2u + 1u) < condition.value;
         }
         return false;
     }
@@ -166,20 +166,28 @@ int CrowdSimulation::nearestPoint(const std::vector<glm::vec2>& points, glm::vec
     return best;
 }
 
+float CrowdSimulation::randomOf(StepScratch& scratch, std::size_t index, std::uint32_t salt) const {
+    if (!scratch.randomReady) {
+        scratch.randomBase = randomBase(index);
+        scratch.randomReady = true;
+    }
+    return randomFrom(scratch.randomBase, salt);
+}
+
 glm::vec2 CrowdSimulation::targetPosition(int found, StepScratch& scratch) const {
     // Where the agent whose turn it is sees it: moved if its turn has come
     // (in the parallel step, agents after it have moved ahead of theirs).
     const auto other = static_cast<std::size_t>(found);
     if (!scratch.outcome)
-        return m_places[other] < static_cast<int>(m_place) ? m_agents[other].position : m_startPositions[other];
-    const glm::vec2 position = m_startPositions[other];
-    if (Outcome* outcome = scratch.outcome) {
-        // It may have moved by the agent's turn: the turn checks that it has not.
-        if (outcome->targetCount == Outcome::kMaxReads) outcome->redo = true;
-        else {
-            outcome->targets[outcome->targetCount] = found;
-            outcome->targetPositions[outcome->targetCount++] = position;
-        }
+        return m_places[other] < static_cast<int>(m_place) ? m_agents[other].position : startPosition(other);
+    // It may have moved by the agent's turn: the turn checks that it has not.
+    const glm::vec2 position = startPosition(other);
+    Outcome& outcome = *scratch.outcome;
+    if (outcome.targetCount == Outcome::kMaxReads) {
+        outcome.redo = true;
+    } else {
+        outcome.targets[outcome.targetCount] = found;
+        outcome.targetPositions[outcome.targetCount++] = position;
     }
     return position;
 }
@@ -214,7 +222,7 @@ void CrowdSimulation::kill(std::size_t victimIndex) {
     if (victim.carrying) m_samples.push_back(victim.position);
     victim.carrying = false;
     ++m_attacks;
-    m_stepKills.push_back(m_startPositions[victimIndex]);
+    m_stepKills.push_back(startPosition(victimIndex));
 }
 
 bool CrowdSimulation::seekTarget(std::size_t index, const CrowdAgent& agent, const Action& action,
@@ -308,7 +316,7 @@ void CrowdSimulation::runAction(std::size_t index, CrowdAgent& agent, const Acti
     switch (action.kind) {
     case Action::Kind::Wander: {
         const float turn = glm::radians(action.value) * m_world.step;
-        agent.heading = wrapAngle(agent.heading + (2.0f * randomFrom(scratch.randomBase, salt) - 1.0f) * turn);
+        agent.heading = wrapAngle(agent.heading + (2.0f * randomOf(scratch, index, salt) - 1.0f) * turn);
         agent.speed = type.speed * speedScale;
         break;
     }
@@ -405,7 +413,7 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
     const float dt = m_world.step;
     const AgentType& type = m_world.types[static_cast<std::size_t>(agent.type)];
     const Behaviour& behaviour = m_world.behaviours[static_cast<std::size_t>(type.behaviourIndex)];
-    scratch.randomBase = randomBase(index);
+    scratch.randomReady = false;
     scratch.memoCount = 1;
     scratch.memoNext = 1;
     scratch.memoHeadings[0] = m_memoHeadings[index];

@@ -98,7 +98,7 @@ bool CrowdSimulation::outcomeHolds(std::size_t index, const Outcome& outcome) co
     }
     // A victim earlier in this step within reach: its senses may have seen it alive.
     const float reach = m_queryReach * 1.001f + 0.01f;
-    const glm::vec2 from = m_startPositions[index];
+    const glm::vec2 from = startPosition(index);
     for (const glm::vec2 victim : m_stepKills)
         if (distanceSquared(victim, from) <= reach * reach) return false;
     return true;

@@ -244,11 +244,9 @@ void CrowdSimulation::rebuildAgentGrid() {
     m_cellStart.assign(cells + 1, 0);
     m_typeCellStart.assign(types * cells + 1, 0);
     m_cellOf.resize(m_agents.size());
-    m_startPositions.resize(m_agents.size());
     m_places.assign(m_agents.size(), -1);
     m_living.resize(m_agents.size());
     for (std::size_t i = 0; i < m_agents.size(); ++i) {
-        m_startPositions[i] = m_agents[i].position;
         m_living[i] = m_agents[i].alive ? 1 : 0;
         m_cellOf[i] = -1;
         if (!m_agents[i].alive) continue;

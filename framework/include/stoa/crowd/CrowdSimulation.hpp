@@ -161,6 +161,12 @@ private:
     /// randomFor(agent, salt) is randomFrom(randomBase(agent), salt): the base once per agent and step.
     std::uint32_t randomBase(std::size_t agent) const;
     static float randomFrom(std::uint32_t base, std::uint32_t salt);
+    /// randomFor(index, salt) for the agent stepping, its base computed on the first ask.
+    float randomOf(StepScratch& scratch, std::size_t index, std::uint32_t salt) const;
+    /// Where an agent in the grid stood when the step began.
+    glm::vec2 startPosition(std::size_t agent) const {
+        return m_cellAgents[static_cast<std::size_t>(m_places[agent])].position;
+    }
     void kill(std::size_t victim);
     bool walkable(glm::vec2 xz) const;
     float height(glm::vec2 xz) const;
@@ -208,7 +214,6 @@ private:
     std::vector<int> m_typeCellStart;     // the same per type: (type * cells + cell) + 1 offsets into m_typeCellAgents
     std::vector<GridEntry> m_typeCellAgents;
     std::vector<int> m_cellOf;            // per agent, scratch of rebuildAgentGrid()
-    std::vector<glm::vec2> m_startPositions;   // per agent, where it stood when the step began
     std::vector<int> m_places;                 // per agent, its place in the step's order (m_cellAgents), -1: none
     std::size_t m_place = 0;                   // the place of the agent whose turn it is
     bool m_committing = false;                 // in the parallel step's second pass: the agents after m_place are stepped already
