@@ -270,7 +270,10 @@ private:
             if (!field.material.empty() && m_materials.count(field.material) == 0)
                 fail(material->line, "field.material: no material is called \"" + quoteInput(field.material) + "\"");
         }
-        if (const Value* rows = find(value, "rows")) field.rows = wholeInRange(*rows, "field.rows", 1, 100, "copies per side");
+        if (const Value* rows = find(value, "rows"))
+            field.rows = wholeInRange(*rows, "field.rows", 1, EditorField::kMaxRows,
+                                      "copies per side; 100 x 100 draw in 1.8 times the showcase's frame on a 2-core "
+                                      "machine with llvmpipe");
         if (const Value* spacing = find(value, "spacing"))
             field.spacing = positive(*spacing, "field.spacing", "metres between neighbouring places");
         if (const Value* clear = find(value, "clear_radius")) {
@@ -283,7 +286,9 @@ private:
     void readLightSwarm(const Value& value, EditorLightSwarm& swarm) const {
         object(value, "light_swarm", {"count", "radius", "height", "brightness", "seed"});
         if (const Value* count = find(value, "count"))
-            swarm.count = wholeInRange(*count, "light_swarm.count", 0, 4096, "how many lights");
+            swarm.count = wholeInRange(*count, "light_swarm.count", 0, EditorLightSwarm::kMaxCount,
+                                       "how many lights; 2000 draw in 1.9 times the showcase's frame on a 2-core "
+                                       "machine with llvmpipe");
         if (const Value* radius = find(value, "radius"))
             swarm.radius = positive(*radius, "light_swarm.radius", "how far from the origin they wander");
         if (const Value* height = find(value, "height")) {

@@ -65,6 +65,11 @@ struct EditorRendererSettings {
 /// A wide field of copies around the scene, jittered on a grid, for lab 06's
 /// culling and levels of detail. Not objects: no picking, no edits.
 struct EditorField {
+    /// The most rows a scene file may ask for: 100 x 100 copies draw in the
+    /// deferred pipeline at 1280 x 720 on llvmpipe (2 cores) in 1.8 times the
+    /// showcase's frame (20 x 20), measured with showcase_benchmark --scene
+    /// (docs/instructor-guide.md, "The editor's caps").
+    static constexpr int kMaxRows = 100;
     std::vector<std::string> meshes;   // OBJ assets (or shapes), one picked per copy; empty: no field
     std::string material;              // one of the scene's materials; empty: the default
     int rows = 20;                     // rows x rows places
@@ -76,6 +81,10 @@ struct EditorField {
 /// Point lights that wander over the ground in the deferred pipeline (lab 08's
 /// hundreds of lights). Not objects: no picking, no edits.
 struct EditorLightSwarm {
+    /// The most lights a scene file may ask for: 2,000 draw at 1280 x 720 on
+    /// llvmpipe (2 cores) in 1.9 times the showcase's frame (300 lights); 4,096
+    /// took 3.2 times (docs/instructor-guide.md, "The editor's caps").
+    static constexpr int kMaxCount = 2000;
     int count = 0;                     // 0: none
     float radius = 14.0f;              // they stay within this many metres of the origin (x and z)
     float height = 2.5f;               // their paths' centres lie from 0.3 m up to this many metres above y = 0

@@ -7,8 +7,9 @@
 //             light, each fragment of which lights the pixel under it
 //   tiled     geometry pass; ambient pass; the lights sorted into screen tiles
 //             on the CPU, each tile bounded by the depths its pixels see (read
-//             back from the G-buffer); one full-screen pass, each pixel looping
-//             over its tile's lights
+//             back from the G-buffer), by the student's buildTileLightLists()
+//             or the framework's own (DeferredSettings::tileLists); one
+//             full-screen pass, each pixel looping over its tile's lights
 //
 // All three light with shaders/deferred/lighting.glsl: forward and the volumes
 // into a 16-bit float light buffer, then copied, clamped, into the framebuffer
