@@ -9,10 +9,85 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace lab07 {
+
+namespace {
+
+// A small triangle whose centroid is at x, with y and z in [0, 1) from a fixed
+// sequence: the same triangles every run.
+struct TriangleMaker {
+    std::uint32_t state = 20261129u;
+    float next() {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) / 16777216.0f;
+    }
+    stoa::Triangle at(float x) {
+        const float y = next(), z = next();
+        return {{x - 0.05f, y, z}, {x + 0.05f, y, z}, {x, y + 0.1f, z + 0.05f}};
+    }
+};
+
+int trianglesUnder(const stoa::Bvh& bvh, int node) {
+    const stoa::BvhNode& n = bvh.nodes[static_cast<std::size_t>(node)];
+    if (n.count > 0) return n.count;
+    return trianglesUnder(bvh, n.first) + trianglesUnder(bvh, n.first + 1);
+}
+
+// The root's split as the two children's triangle counts, smaller first; empty
+// when the root is a leaf.
+std::string rootSplit(const stoa::Bvh& bvh) {
+    if (bvh.nodes.empty() || bvh.nodes[0].count > 0) return "no split (the root is a leaf)";
+    const int a = trianglesUnder(bvh, bvh.nodes[0].first), b = trianglesUnder(bvh, bvh.nodes[0].first + 1);
+    return std::to_string(std::min(a, b)) + " | " + std::to_string(std::max(a, b));
+}
+
+} // namespace
+
+stoa::CheckResult checkBvhCheapestSplit() {
+    struct Layout {
+        const char* what;
+        std::vector<float> xs;   // the centroids' x
+        const char* expected;
+        const char* why;
+    };
+    TriangleMaker maker;
+    // 16 triangles within a metre, one 50 m away: the cheapest plane leaves it alone.
+    std::vector<float> outlier;
+    for (int i = 0; i < 16; ++i) outlier.push_back(0.06f * static_cast<float>(i));
+    outlier.push_back(50.0f);
+    // 11 triangles one per bin (12 bins over x = 0 to 12) and 30 in the last bin:
+    // the cheapest plane is the last one, between bins 10 and 11.
+    std::vector<float> lastPlane;
+    for (int i = 0; i < 11; ++i) lastPlane.push_back(0.5f + static_cast<float>(i));
+    for (int i = 0; i < 30; ++i) lastPlane.push_back(11.4f + 0.2f * static_cast<float>(i) / 29.0f);
+    lastPlane.front() = 0.0f;   // the centroids' box from x = 0
+    lastPlane.back() = 12.0f;   // to x = 12: bins one metre wide
+    const Layout layouts[] = {
+        {"16 triangles within a metre and one 50 m away along x", outlier, "1 | 16",
+         "the cheapest plane leaves the far triangle alone in a child of one"},
+        {"11 triangles one a metre from x = 0 to 10.5 and 30 within x = 11.4 to 12", lastPlane, "11 | 30",
+         "the cheapest of the bins - 1 planes is the last one, between the last two bins"},
+    };
+    for (const Layout& layout : layouts) {
+        std::vector<stoa::Triangle> triangles;
+        for (const float x : layout.xs) triangles.push_back(maker.at(x));
+        const stoa::Bvh bvh = stoa::buildBvh(triangles);
+        const std::string split = rootSplit(bvh);
+        if (split != layout.expected)
+            return stoa::CheckResult::fail("buildBvh() of " + std::string(layout.what) + " splits the root into " + split +
+                                           " triangles; expected " + layout.expected + ": " + layout.why +
+                                           " (12 bins, C_t = C_i = 1). Try every plane between two bins on each "
+                                           "axis, a child of one triangle included, and keep the cheapest "
+                                           "(docs: Where to split)");
+    }
+    return stoa::CheckResult::pass("buildBvh() splits the root at the cheapest plane: a far triangle alone, and the "
+                                   "last plane between the bins");
+}
 
 stoa::CheckResult checkSlabTestTable() {
     const float infinity = std::numeric_limits<float>::infinity();

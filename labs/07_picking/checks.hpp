@@ -13,4 +13,10 @@ namespace lab07 {
 /// enters (0 from inside) (docs: "The slab test").
 stoa::CheckResult checkSlabTestTable();
 
+/// bvh_cheapest_split: buildBvh() splits the root at the cheapest of all the
+/// candidate planes, in two layouts where it is one the graded scenes never
+/// need: a child of a single far triangle, and the last plane, between the last
+/// two bins (docs: "Where to split").
+stoa::CheckResult checkBvhCheapestSplit();
+
 } // namespace lab07

@@ -240,6 +240,7 @@ public:
 
     stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
         if (spec.check == "slab_test_table") return lab07::checkSlabTestTable();
+        if (spec.check == "bvh_cheapest_split") return lab07::checkBvhCheapestSplit();
         return Lab::runCheck(spec);
     }
 
