@@ -318,6 +318,36 @@ bool scalingFigures(const Example& example, int runs, int steps, int onlyAgents,
     return allEqual;
 }
 
+/// The lab's walkableAt() and heightAt() alone: called at every living
+/// agent's position and 1 m ahead of it, in the step's order (cell by cell),
+/// as often as a step calls them; the median of `runs` rounds.
+void labLookUps(const CrowdSimulation& crowd, const CrowdFunctions& code, int runs, double walkablePerStep,
+                double heightPerStep) {
+    std::vector<glm::vec2> points;
+    for (const CrowdAgent& agent : crowd.agents())
+        if (agent.alive) points.push_back(agent.position);
+    std::sort(points.begin(), points.end(), [](glm::vec2 a, glm::vec2 b) {
+        const int ra = static_cast<int>(std::floor(a.y / 7.0f)), rb = static_cast<int>(std::floor(b.y / 7.0f));
+        return ra != rb ? ra < rb : a.x < b.x;
+    });
+    std::vector<double> walkableNs, heightNs;
+    int sink = 0;   // read below, so that the calls are not optimized away
+    float heightSink = 0.0f;
+    for (int run = 0; run < runs; ++run) {
+        Clock::time_point start = Clock::now();
+        for (const glm::vec2 p : points) sink += code.walkableAt(crowd.maps().collision, p + glm::vec2(0.0f, 1.0f)) ? 1 : 0;
+        walkableNs.push_back(milliseconds(start, Clock::now()) * 1e6 / static_cast<double>(points.size()));
+        start = Clock::now();
+        for (const glm::vec2 p : points) heightSink += code.heightAt(crowd.maps().heights, p);
+        heightNs.push_back(milliseconds(start, Clock::now()) * 1e6 / static_cast<double>(points.size()));
+    }
+    const double walkable = median(walkableNs), height = median(heightNs);
+    std::printf("  the lab's look-ups alone (%zu points in the step's order): walkableAt %.1f ns, heightAt %.1f ns a "
+                "call, %.3f + %.3f ms a step%s\n",
+                points.size(), walkable, height, walkable * walkablePerStep * 1e-6, height * heightPerStep * 1e-6,
+                sink < 0 || heightSink < -1e30f ? " " : "");
+}
+
 bool simulationFigures(int runs, int steps, int onlyAgents, int threads) {
     const Example example = loadExample();
     std::printf("simulation: predators_prey tiled (60 m tiles of %dx%d texels, 44 agents per tile, a tenth wolves), "
@@ -355,6 +385,7 @@ bool simulationFigures(int runs, int steps, int onlyAgents, int threads) {
                 "%.0f, heightAt %.0f\n",
                 steps, g_counters.machine * perStep, g_counters.layers * perStep, g_counters.walkable * perStep,
                 g_counters.height * perStep);
+    labLookUps(counted, studentCode().crowds, runs, g_counters.walkable * perStep, g_counters.height * perStep);
     std::printf("  senses per step, by condition (clock overhead %.0f ns subtracted per call):\n", g_clockOverheadNs);
     for (int k = 0; k < kKinds; ++k) {
         if (g_counters.senses[static_cast<std::size_t>(k)] == 0) continue;

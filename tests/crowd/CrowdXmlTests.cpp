@@ -474,7 +474,7 @@ TEST_CASE("Crowd XML: malformed worlds are refused with the file, the line and t
     SECTION("too many agents") {
         expectError({{"world.xml", world("  <spawn type=\"walker\" count=\"60000\" x=\"0\" z=\"0\"/>\n"
                                          "  <spawn type=\"walker\" count=\"40000\" x=\"0\" z=\"0\"/>\n")}},
-                    "world.xml", "count=\"3\"", "place 100003 agents in all; at most 100000 are allowed");
+                    "world.xml", "count=\"3\"", "place 100003 agents in all; at most 100000 are allowed (100,000 agents step in about");
     }
     SECTION("too many samples in one element") {
         expectError({{"world.xml", world("  <samples count=\"100001\" x=\"0\" z=\"0\"/>\n")}}, "world.xml", "<samples",

@@ -237,7 +237,7 @@ TEST_CASE("Crowd: the parallel step gives the serial crowd bit for bit", "[crowd
             INFO(e->world.file.filename().string() << " on " << threads << " threads");
             CrowdSimulation serial = crowdWith(e->world, e->maps, testCode());
             CrowdSimulation parallel = crowdWith(e->world, e->maps, testCode());
-            parallel.setThreads(threads);
+            parallel.setThreads(threads, 0);
             REQUIRE(parallel.threads() == threads);
             for (int round = 0; round < 6; ++round) {
                 serial.advance(50);

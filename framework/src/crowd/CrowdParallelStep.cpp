@@ -45,7 +45,8 @@ bool sameBits(glm::vec2 a, glm::vec2 b) { return std::memcmp(&a, &b, sizeof a) =
 
 } // namespace
 
-void CrowdSimulation::setThreads(int threads) {
+void CrowdSimulation::setThreads(int threads, int fromAgents) {
+    m_parallelFrom = static_cast<std::size_t>(std::max(0, fromAgents));
     threads = std::max(1, threads);
     if (threads == this->threads()) return;
     m_workers.reset();

@@ -312,7 +312,7 @@ void CrowdSimulation::stepTheDead() {
 }
 
 void CrowdSimulation::step() {
-    if (m_workers && m_parallelSafe) {
+    if (m_workers && m_parallelSafe && m_cellAgents.size() >= m_parallelFrom) {
         stepParallel();
         return;
     }

@@ -185,7 +185,8 @@ void Loader::readWorld(const XmlFile& file, pugi::xml_node world) {
             agents += spawn.count;
             if (agents > CrowdXmlLimits::maxAgents) {
                 file.fail(node, "the <spawn> elements place " + std::to_string(agents) + " agents in all; at most " +
-                                    std::to_string(CrowdXmlLimits::maxAgents) + " are allowed");
+                                    std::to_string(CrowdXmlLimits::maxAgents) + " are allowed (" +
+                                    CrowdXmlLimits::maxAgentsReason + ", too slow to watch)");
             }
             m_world.spawns.push_back(spawn);
         } else {

@@ -84,8 +84,10 @@ public:
     /// each agent ahead of its turn, and the caller takes each result in the
     /// serial order, stepping again in its turn an agent whose result a kill
     /// or a move earlier in the step changed. Worlds with samples or crumbs
-    /// (shared lists each agent's turn changes) step on one thread whatever this says.
-    void setThreads(int threads);
+    /// (shared lists each agent's turn changes) step on one thread whatever this says,
+    /// and so does a step of fewer than `fromAgents` living agents (handing
+    /// work to threads costs more than such a step: 0 to step all in parallel).
+    void setThreads(int threads, int fromAgents = 2000);
     int threads() const;
 
     void step();
@@ -203,6 +205,7 @@ private:
     float m_queryReach = 0.0f;   // the farthest an agent's senses and actions look for others, metres
     float m_lookAhead = 0.0f;    // the farthest <blocked ahead>, metres (prefetched)
     bool m_parallelSafe = true;  // no samples or crumbs: what one agent does to the others is a kill or a message
+    std::size_t m_parallelFrom = 0;   // living agents from which a step is parallel
 
     // The living agents bucketed in square cells, rebuilt after each step:
     // the senses see the others where they stood when the step began, and

@@ -30,10 +30,16 @@ struct CrowdXmlLimits {
     static constexpr int maxIncludeDepth = 8;
     static constexpr int maxIncludes = 256;                 // <include> elements, all files together
     static constexpr std::size_t maxWorldBytes = 16u << 20; // the world file and its includes together
-    /// All spawn counts together: 100,000 agents step in about 34 ms at the example
-    /// worlds' density (crowd_benchmark --agents 100000); a denser crowd, or a longer
-    /// sight, costs more per agent, and the window says so when a step is slow.
+    /// All spawn counts together: what still steps in real time (30 steps a
+    /// second, 33 ms a step) on one core of the reference machine (2 cores):
+    /// 100,000 agents step in about 22 ms of CPU time at the example worlds'
+    /// density, 1,000,000 in about 290 ms (crowd_benchmark; docs/crowds-xml.md).
+    /// A denser crowd, or a longer sight, costs more per agent, and the window
+    /// says so when a step is slow.
     static constexpr int maxAgents = 100000;
+    /// The figure the error for a larger world gives.
+    static constexpr const char* maxAgentsReason =
+        "100,000 agents step in about 22 ms on one core, within a 33 ms step; 1,000,000 take about 290 ms";
     static constexpr int maxSamples = 100000;
 };
 
