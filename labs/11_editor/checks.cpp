@@ -116,6 +116,12 @@ CheckResult mergeRulesBody() {
     if (x() != 3.0f)
         return CheckResult::fail("redo of the merged drag must move the box to where its last command put it (3), got " +
                                  std::to_string(x()));
+    // A redone edit is done again: undo takes it back.
+    if (history.undoCount() != 1 || !history.undo(scene) || x() != 0.0f)
+        return CheckResult::fail("after redo() of the merged drag, undo() must take it back again (the box to 0, " +
+                                 std::to_string(history.undoCount()) + " edits to undo, the box at " +
+                                 std::to_string(x()) + "): redo moves the command back onto the done list");
+    history.redo(scene);
 
     // Undo in the middle of a drag: the drag goes on after it, and its next moves
     // are a new edit, not part of the edit before the undone one (which has the same key).
