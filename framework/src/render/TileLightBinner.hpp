@@ -10,8 +10,8 @@
 // reference assignment of docs/labs/08_deferred.md ("Tiled shading", "Depth
 // bounds"): a light's screen rectangle from the eight corners of the box
 // around its sphere, and a tile kept where the sphere's span of distances
-// meets the tile's depths. tests/labs/TileLightBinnerTests.cpp compares the
-// two on random scenes. How it gets there differs, for speed: the depths are
+// meets the tile's depths. TileLightBinnerTests.cpp, with the lab tests of a
+// solutions build, compares the two on random scenes. How it gets there differs, for speed: the depths are
 // kept as two flat arrays, each light marks one bit per tile it reaches (one
 // 64-bit word holds 64 lights; a light's words for a row of tiles lie side by
 // side), and each tile's list is read off its bits in order, so that every
