@@ -256,8 +256,14 @@ void CrowdSimulation::rebuildAgentGrid() {
         ++m_cellStart[static_cast<std::size_t>(m_cellOf[i]) + 1];
         ++m_typeCellStart[static_cast<std::size_t>(m_agents[i].type) * cells + static_cast<std::size_t>(m_cellOf[i]) + 1];
     }
-    for (std::size_t c = 0; c < cells; ++c) m_cellStart[c + 1] += m_cellStart[c];
-    for (std::size_t c = 0; c < types * cells; ++c) m_typeCellStart[c + 1] += m_typeCellStart[c];
+    // Counts to starts, the running sum in a register (not read back from the
+    // array it was just stored to, a wait of several cycles per cell).
+    const auto runningSum = [](std::vector<int>& starts) {
+        int sum = 0;
+        for (std::size_t c = 1; c < starts.size(); ++c) starts[c] = sum += starts[c];
+    };
+    runningSum(m_cellStart);
+    runningSum(m_typeCellStart);
     m_cellAgents.resize(static_cast<std::size_t>(m_cellStart[cells]));
     m_typeCellAgents.resize(m_cellAgents.size());
     // Filled in index order: within a cell the agents stand by index, the
