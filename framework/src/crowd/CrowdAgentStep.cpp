@@ -396,15 +396,21 @@ void CrowdSimulation::prefetchPlace(std::size_t place) const {
     // The texel under it and the two rows of heights around it (heightAt() is
     // bilinear between texel centres); the texel under it is the one the move reads.
     const glm::vec2 position = m_cellAgents[place + kPrefetchAhead].position;
-    const auto texelOf = [&](const GroundMap& map) {
-        const glm::vec2 t = (position - map.min) * map.scale;
+    const auto texelOf = [](const GroundMap& map, glm::vec2 xz) {
+        const glm::vec2 t = (xz - map.min) * map.scale;
         const int col = std::clamp(static_cast<int>(t.x), 0, map.lastCol);
         const int row = std::clamp(static_cast<int>(t.y), 0, map.lastRow);
         return static_cast<std::size_t>(row) * map.width + static_cast<std::size_t>(col);
     };
-    __builtin_prefetch(m_maps.collision.walkable.data() + texelOf(m_prefetchCollision));
+    __builtin_prefetch(m_maps.collision.walkable.data() + texelOf(m_prefetchCollision, position));
+    // And the texel `blocked ahead` reads, where the heading's direction is known.
+    const auto agentAhead = static_cast<std::size_t>(m_cellAgents[place + kPrefetchAhead].agent);
+    if (m_lookAhead > 0.0f && sameBits(m_memoHeadings[agentAhead], m_cellAgents[place + kPrefetchAhead].heading)) {
+        const glm::vec2 look = position + m_memoDirections[agentAhead] * m_lookAhead;
+        __builtin_prefetch(m_maps.collision.walkable.data() + texelOf(m_prefetchCollision, look));
+    }
     if (m_prefetchHeights.width == 0) return;
-    const float* heights = m_maps.heights.values.data() + texelOf(m_prefetchHeights);
+    const float* heights = m_maps.heights.values.data() + texelOf(m_prefetchHeights, position);
     __builtin_prefetch(heights);
     __builtin_prefetch(heights + m_prefetchHeights.width);
 }

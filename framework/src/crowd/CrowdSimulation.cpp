@@ -271,10 +271,17 @@ void CrowdSimulation::rebuildAgentGrid() {
     for (std::size_t i = 0; i < m_agents.size(); ++i) {
         if (m_cellOf[i] < 0) continue;
         const auto cell = static_cast<std::size_t>(m_cellOf[i]);
-        const GridEntry entry{m_agents[i].position, m_agents[i].heading, m_agents[i].type, static_cast<int>(i)};
+        const CrowdAgent& agent = m_agents[i];
         m_places[i] = m_cellStart[cell];
-        m_cellAgents[static_cast<std::size_t>(m_cellStart[cell]++)] = entry;
-        m_typeCellAgents[static_cast<std::size_t>(m_typeCellStart[static_cast<std::size_t>(entry.type) * cells + cell]++)] = entry;
+        // Field by field: an entry built whole and then copied waits on its own stores.
+        const auto fill = [&](GridEntry& entry) {
+            entry.position = agent.position;
+            entry.heading = agent.heading;
+            entry.type = agent.type;
+            entry.agent = static_cast<int>(i);
+        };
+        fill(m_cellAgents[static_cast<std::size_t>(m_cellStart[cell]++)]);
+        fill(m_typeCellAgents[static_cast<std::size_t>(m_typeCellStart[static_cast<std::size_t>(agent.type) * cells + cell]++)]);
     }
     // Each start was moved on to its cell's end: shift them back.
     for (std::size_t c = cells; c > 0; --c) m_cellStart[c] = m_cellStart[c - 1];
