@@ -8,10 +8,10 @@
 #include <stoa/gl/StateCache.hpp>
 #include <stoa/gl/Texture2D.hpp>
 #include <stoa/render/DeferredRenderer.hpp>
-
-#include "TileLightBinner.hpp"
 #include <stoa/scene/ObjectUniforms.hpp>
 #include <stoa/scene/Scene.hpp>
+
+#include "TileLightBinner.hpp"
 
 #include <glm/glm.hpp>
 

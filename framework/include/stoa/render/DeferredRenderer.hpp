@@ -47,9 +47,9 @@ namespace stoa {
 
 class Camera;
 class ObjectUniforms;
-class TileLightBinner;
 class Program;
 class Texture2D;
+class TileLightBinner;   // private to libstoa (framework/src/render)
 
 enum class LightingMode { Forward, Volumes, Tiled };
 
