@@ -10,7 +10,8 @@
 //   - the tiles' depth ranges from the depth buffer: the per-pixel conversion
 //     the renderer made before against the per-tile extremes it makes now;
 //   - the depth buffer's readback itself (glReadPixels of GL_DEPTH24_STENCIL8
-//     as floats, on the headless context: llvmpipe unless $STOA_HEADLESS says).
+//     as floats, as the renderer reads it, and for scale as packed depth and
+//     stencil; on the headless context: llvmpipe unless $STOA_HEADLESS says).
 // The depths are those of the ground (y = 0) under the camera, sky above the
 // horizon, in 24-bit steps as the G-buffer holds them; the columns and statues
 // are left out (fewer surfaces in front of the lights: a few more entries).
@@ -140,13 +141,17 @@ bool measure(const EditorScene& scene, glm::ivec2 size, int runs) {
     glClearDepth(0.5);
     glClear(GL_DEPTH_BUFFER_BIT);
     std::vector<float> readBack(depth.size());
+    std::vector<std::uint32_t> readBackPacked(depth.size());
 
     TileLightBinner binner;
     TileLightLists fast, reference;
-    std::vector<double> readTimes, pixelTimes, tileTimes, referenceTimes, fastTimes;
+    std::vector<double> readTimes, packedTimes, pixelTimes, tileTimes, referenceTimes, fastTimes;
     bool same = true;
     for (int run = -1; run < runs; ++run) {   // run -1: warm-up, not counted
         const double read = timed([&] { target.readPixels(-1, 0, 0, size.x, size.y, GL_DEPTH_COMPONENT, GL_FLOAT, readBack.data()); });
+        const double packed = timed([&] {
+            target.readPixels(-1, 0, 0, size.x, size.y, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, readBackPacked.data());
+        });
         std::vector<DepthRange> before;
         const double pixel = timed([&] { before = perPixelDepthRanges(depth, size, projection, grid); });
         const double tile = timed([&] { binner.depthRanges(depth.data(), size, projection, grid); });
@@ -158,6 +163,7 @@ bool measure(const EditorScene& scene, glm::ivec2 size, int runs) {
             same = same && std::memcmp(&before[t], &depths[t], sizeof(DepthRange)) == 0;
         if (run < 0) continue;
         readTimes.push_back(read);
+        packedTimes.push_back(packed);
         pixelTimes.push_back(pixel);
         tileTimes.push_back(tile);
         referenceTimes.push_back(slow);
@@ -171,6 +177,7 @@ bool measure(const EditorScene& scene, glm::ivec2 size, int runs) {
     std::printf("  tile depth ranges, every pixel converted (before)    %7.3f ms\n", median(pixelTimes));
     std::printf("  tile depth ranges, each tile's extremes (now)        %7.3f ms\n", median(tileTimes));
     std::printf("  depth readback, glReadPixels as floats               %7.3f ms\n", median(readTimes));
+    std::printf("  depth readback, as 24-bit depth and stencil (for scale) %4.3f ms\n", median(packedTimes));
     std::printf("  same lists and depth ranges: %s\n", same ? "yes" : "NO");
     return same;
 }
