@@ -32,14 +32,14 @@ struct CrowdXmlLimits {
     static constexpr std::size_t maxWorldBytes = 16u << 20; // the world file and its includes together
     /// All spawn counts together: what still steps in real time (30 steps a
     /// second, 33 ms a step) on one core of the reference machine (2 cores):
-    /// 100,000 agents step in about 22 ms of CPU time at the example worlds'
-    /// density, 1,000,000 in about 290 ms (crowd_benchmark; docs/crowds-xml.md).
+    /// 100,000 agents step in 15 to 20 ms of CPU time at the example worlds'
+    /// density, 1,000,000 in 200 to 300 ms (crowd_benchmark; docs/crowds-xml.md).
     /// A denser crowd, or a longer sight, costs more per agent, and the window
     /// says so when a step is slow.
     static constexpr int maxAgents = 100000;
     /// The figure the error for a larger world gives.
     static constexpr const char* maxAgentsReason =
-        "100,000 agents step in about 22 ms on one core, within a 33 ms step; 1,000,000 take about 290 ms";
+        "100,000 agents step in about 15 to 20 ms on one core, within a 33 ms step; 1,000,000 take 200 to 300 ms";
     static constexpr int maxSamples = 100000;
 };
 
