@@ -140,9 +140,9 @@ private:
     void stepTheDead();
     void endStep();
 
-    // One living agent's step (CrowdAgentStep.cpp): `agent` is m_agents[index]
-    // itself in the serial step, a copy in the parallel step's first pass,
-    // which records in scratch.outcome what it does to the others instead.
+    // One living agent's step (CrowdAgentStep.cpp), on `agent`, which is
+    // m_agents[index]: in the parallel step's first pass scratch.outcome
+    // records what it does to the others instead of doing it.
     void stepAgent(std::size_t index, CrowdAgent& agent, StepScratch& scratch);
     void runAction(std::size_t index, CrowdAgent& agent, const Action& action, float speedScale,
                    StepScratch& scratch);
