@@ -148,4 +148,50 @@ stoa::CheckResult checkTangentsWithoutNans() {
                                    "unit tangent perpendicular to its normal");
 }
 
+stoa::CheckResult checkTangentsFollowTheUvs() {
+    // One triangle in the XY plane (normal +Z) whose uvs are a linear map A of
+    // its (x, y): uv = A (x, y). Then the surface's (x, y) = A^-1 uv, and u grows
+    // along A^-1's first column, v along its second. Maps that scale, shear,
+    // mirror and turn, none of them by whole units only.
+    const glm::mat2 maps[] = {
+        glm::mat2(0.25f, 0.0f, 0.0f, 3.0f),     // columns: u = 0.25 x, v = 3 y
+        glm::mat2(-0.4f, 0.3f, 0.7f, 1.6f),     // mirrored and sheared
+        glm::mat2(0.6f, -2.0f, 1.5f, 0.5f),     // turned and stretched
+        glm::mat2(2.5f, 0.2f, -0.3f, -0.8f),    // mirrored the other way
+        glm::mat2(2.0f, -0.1f, 0.8f, -2.1f),    // mirrored in v, u stretched
+        glm::mat2(-1.6f, 0.3f, -0.8f, 0.6f),    // mirrored in u, sheared
+    };
+    const glm::vec3 corners[] = {{0.2f, 0.1f, 0.0f}, {1.3f, 0.4f, 0.0f}, {0.5f, 1.7f, 0.0f}};
+    for (const glm::mat2& map : maps) {
+        stoa::Mesh mesh;
+        for (const glm::vec3& corner : corners) {
+            stoa::Vertex vertex{};
+            vertex.position = corner;
+            vertex.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+            vertex.uv = map * glm::vec2(corner);
+            mesh.vertices.push_back(vertex);
+        }
+        mesh.indices = {0, 1, 2};
+        stoa::computeTangents(mesh);
+        const glm::mat2 back = glm::inverse(map);
+        const glm::vec3 alongU(glm::normalize(back[0]), 0.0f), alongV(back[1], 0.0f);
+        const float handedness = glm::dot(glm::cross(glm::vec3(0.0f, 0.0f, 1.0f), alongU), alongV) < 0.0f ? -1.0f : 1.0f;
+        const glm::vec4 t = mesh.vertices[0].tangent;
+        const std::string what = "computeTangents() of a triangle whose uvs are (" + std::to_string(map[0][0]) + " x + " +
+                                 std::to_string(map[1][0]) + " y, " + std::to_string(map[0][1]) + " x + " +
+                                 std::to_string(map[1][1]) + " y) gives " + tangentText(t);
+        if (!finite(t) || glm::length(glm::vec3(t) - alongU) > 1e-3f)
+            return stoa::CheckResult::fail(what + "; u grows along " + tangentText(glm::vec4(alongU, handedness)) +
+                                           " there (solve the 2 x 2 uv system for T) (docs: The tangent frame)");
+        if (t.w != handedness)
+            return stoa::CheckResult::fail(what + ", w " + std::to_string(t.w) + "; v grows along " +
+                                           tangentText(glm::vec4(glm::normalize(alongV), 0.0f)) +
+                                           ", so w is " + std::to_string(handedness) +
+                                           " (the sign of dot(cross(N, T), B), B from the same system) "
+                                           "(docs: Handedness)");
+    }
+    return stoa::CheckResult::pass("tangents and handedness follow u and v for six uv maps that scale, shear, "
+                                   "mirror and turn");
+}
+
 } // namespace lab04

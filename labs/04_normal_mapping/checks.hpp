@@ -20,4 +20,10 @@ stoa::CheckResult checkNormalMapWraps();
 /// "The tangent frame").
 stoa::CheckResult checkTangentsWithoutNans();
 
+/// tangents_follow_the_uvs: computeTangents() of a triangle whose uvs are a
+/// linear map of its position (scaled, sheared, mirrored, turned; never by whole
+/// units only): the tangent points where u grows, and w is the sign that makes
+/// w cross(N, T) point where v grows (docs: "The tangent frame", "Handedness").
+stoa::CheckResult checkTangentsFollowTheUvs();
+
 } // namespace lab04

@@ -83,7 +83,18 @@ stoa::CheckResult checkPlanesBoundClipSpace() {
                                        glm::vec3(0.0f, 1.0f, 0.0f));
     const glm::mat4 viewProjection = projection * view;
     const glm::mat4 back = glm::inverse(viewProjection);
-    const stoa::Frustum frustum = stoa::frustumPlanes(viewProjection);
+    // Guard values right after the six planes: a loop that writes a seventh plane
+    // lands on them (the result is built in place, C++17's guaranteed elision).
+    struct Guarded {
+        stoa::Frustum frustum;
+        float guard[8];
+    };
+    const Guarded guarded{stoa::frustumPlanes(viewProjection), {1, 2, 3, 4, 5, 6, 7, 8}};
+    const stoa::Frustum& frustum = guarded.frustum;
+    for (int i = 0; i < 8; ++i)
+        if (guarded.guard[i] != static_cast<float>(i + 1))
+            return stoa::CheckResult::fail("frustumPlanes() wrote past its six planes: a frustum has planes[0] to "
+                                           "planes[5], left, right, bottom, top, near, far (docs: The frustum's planes)");
     for (int side = 0; side < 6; ++side) {
         const float length = glm::length(frustum.planes[side].normal);
         if (std::fabs(length - 1.0f) > 1e-3f)
@@ -130,7 +141,8 @@ stoa::CheckResult checkLevelsOfDetail() {
     // The page's table for four levels, its ends, and other level counts.
     const Expected table[] = {{1.0f, 4, 0},  {0.76f, 4, 0}, {0.75f, 4, 1}, {0.5f, 4, 2},  {0.26f, 4, 2},
                               {0.25f, 4, 3}, {1e-6f, 4, 3}, {0.0f, 4, -1}, {-0.5f, 4, -1}, {1.0f, 1, 0},
-                              {0.01f, 1, 0}, {0.0f, 1, -1}, {0.5f, 5, 2},  {0.59f, 5, 2}, {0.01f, 7, 6}};
+                              {0.01f, 1, 0}, {0.0f, 1, -1}, {0.5f, 5, 2},  {0.59f, 5, 2}, {0.01f, 7, 6},
+                              {1e-9f, 4, 3}};
     for (const Expected& row : table) {
         const int level = stoa::levelOfDetail(row.quality, row.levels);
         if (level != row.level)
@@ -141,8 +153,42 @@ stoa::CheckResult checkLevelsOfDetail() {
                                                           : " (min(floor((1 - q) n), n - 1))") +
                                            " (docs: Level of detail)");
     }
-    return stoa::CheckResult::pass("levelOfDetail() gives the page's levels for 15 qualities and level counts, "
+    return stoa::CheckResult::pass("levelOfDetail() gives the page's levels for 16 qualities and level counts, "
                                    "-1 for q <= 0");
+}
+
+stoa::CheckResult checkInsideAtTheBoundary() {
+    // The box [-1, 1]^3 as six planes, normals inwards: s(p) = n . p + d.
+    stoa::Frustum cube;
+    const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int side = 0; side < 6; ++side) cube.planes[side] = {normals[side], 1.0f};
+    for (int side = 0; side < 6; ++side) {
+        const glm::vec3 out = -normals[side];   // away from the cube through this side
+        const std::string where = std::string(kSideNames[side]) + " side";
+        // A sphere of radius 2 whose centre is 3 outside the centre: it touches the side.
+        const stoa::BoundingSphere touching{out * 3.0f, 2.0f}, apart{out * 3.0f, 1.75f};
+        if (!stoa::sphereInFrustum(cube, touching))
+            return stoa::CheckResult::fail("sphereInFrustum() culls a sphere that touches the " + where +
+                                           " of the box [-1, 1]^3 from outside (s(c) = -r exactly); it is culled "
+                                           "only when s(c) < -r (docs: Is it inside?)");
+        if (stoa::sphereInFrustum(cube, apart))
+            return stoa::CheckResult::fail("sphereInFrustum() keeps a sphere a quarter outside the " + where +
+                                           " of the box [-1, 1]^3 (docs: Is it inside?)");
+        // A box from the side outwards, its nearest face on the side's plane: kept.
+        const glm::vec3 a = out * 1.0f - glm::vec3(0.5f) * (glm::vec3(1.0f) - glm::abs(out));
+        const glm::vec3 b = out * 5.0f + glm::vec3(0.5f) * (glm::vec3(1.0f) - glm::abs(out));
+        const stoa::Aabb onTheSide{glm::min(a, b), glm::max(a, b)};
+        if (!stoa::boxInFrustum(cube, onTheSide))
+            return stoa::CheckResult::fail("boxInFrustum() culls a box whose face lies on the " + where +
+                                           "'s plane (s(p+) = 0 exactly); it is culled only when s(p+) < 0 "
+                                           "(docs: Is it inside?)");
+        const stoa::Aabb beyond{onTheSide.min + out * 0.25f, onTheSide.max + out * 0.25f};
+        if (stoa::boxInFrustum(cube, beyond))
+            return stoa::CheckResult::fail("boxInFrustum() keeps a box a quarter outside the " + where +
+                                           " of the box [-1, 1]^3 (docs: Is it inside?)");
+    }
+    return stoa::CheckResult::pass("a sphere and a box that touch a side from outside are kept, and culled a "
+                                   "quarter further out, on all six sides");
 }
 
 } // namespace lab06

@@ -23,4 +23,10 @@ stoa::CheckResult checkPlanesBoundClipSpace();
 /// its ends and other level counts; -1 for q <= 0 (docs: "Level of detail").
 stoa::CheckResult checkLevelsOfDetail();
 
+/// inside_at_the_boundary: on the six planes of the box [-1, 1]^3, a sphere that
+/// touches a side from outside (s(c) = -r) and a box whose face lies on a side's
+/// plane (s(p+) = 0) are kept; a quarter further out they are culled (docs:
+/// "Is it inside?").
+stoa::CheckResult checkInsideAtTheBoundary();
+
 } // namespace lab06

@@ -207,6 +207,7 @@ public:
         if (spec.check == "sphere_turned_about_x") return lab06::checkSphereTurnedAboutX();
         if (spec.check == "planes_bound_clip_space") return lab06::checkPlanesBoundClipSpace();
         if (spec.check == "levels_of_detail") return lab06::checkLevelsOfDetail();
+        if (spec.check == "inside_at_the_boundary") return lab06::checkInsideAtTheBoundary();
         return Lab::runCheck(spec);
     }
 

@@ -198,6 +198,12 @@ stoa::CheckResult blendedNormalsUnitBody() {
                                                std::to_string(glm::length(normals[i])) +
                                                "; normals must be unit length (a blend of two is shorter: normalize it)");
             }
+            const glm::vec3 between = glm::normalize(first.normals[i] + t * (second.normals[i] - first.normals[i]));
+            if (glm::length(normals[i] - between) > 1e-3f) {
+                return stoa::CheckResult::fail("blendMd2Frames() at t = " + std::to_string(t) + " gave vertex " +
+                                               std::to_string(i) + " a normal that is not the normalized blend "
+                                               "n1 + t (n2 - n1) of its two frames' normals");
+            }
             if (t == 0.0f && glm::length(normals[i] - first.normals[i]) > 1e-4f) {
                 return stoa::CheckResult::fail("blendMd2Frames() at t = 0 gave vertex " + std::to_string(i) +
                                                " a normal other than the first frame's");

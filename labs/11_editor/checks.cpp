@@ -73,8 +73,23 @@ CheckResult pickWithinACircleBody() {
                                      std::to_string(i + 1) + ", got " + std::to_string(got) +
                                      "; the first and last rows and columns are inside the read-back "
                                      "(docs: From the mouse to a stencil value)");
+    // A row's neighbours in memory are the ends of the rows around it: a search
+    // that runs past the left or right edge reads the other side of the picture.
+    for (const int side : {0, 1}) {
+        stencil = background(21, 15);
+        for (int y = 0; y < 15; ++y)
+            for (int x = 0; x < 3; ++x) put(stencil, side == 0 ? 20 - x : x, y, 6);
+        const glm::ivec2 click(side == 0 ? 0 : 20, 7);
+        if (int got = stoa::objectAtPixel(stencil, click, 3); got != -1)
+            return CheckResult::fail("value 6 only in the three columns at the " + std::string(side == 0 ? "right" : "left") +
+                                     " edge, a click at " + pixel(click.x, click.y) + " on the other edge, radius 3: "
+                                     "expected nothing (-1), got " + std::to_string(got) +
+                                     "; keep the search's columns within 0 to width - 1, or it reads the next "
+                                     "row's pixels (docs: From the mouse to a stencil value)");
+    }
     return CheckResult::pass("the radius is a circle including its edge, ties go to the read-back's order, "
-                             "the background and outside pick nothing, the corners pick what is there");
+                             "the background and outside pick nothing, the corners pick what is there, and "
+                             "the search stays within its row at the edges");
 }
 
 CheckResult mergeRulesBody() {
