@@ -68,7 +68,7 @@ private:
         case Condition::Kind::SmellsCrumb:
             return m_crowd.nearestPoint(m_crowd.m_crumbs, agent.position, type.sightRadius) >= 0;
         case Condition::Kind::Blocked:
-            return !m_crowd.walkable(agent.position + headingDirection(m_scratch, agent.heading) * condition.value);
+            return !m_crowd.walkableAhead(m_index, agent.position + headingDirection(m_scratch, agent.heading) * condition.value);
         case Condition::Kind::TimeInState: return agent.timeInState >= condition.value;
         case Condition::Kind::Message:
             return condition.index >= 0 && (agent.messages & (1u << condition.index)) != 0;
@@ -205,11 +205,21 @@ glm::vec2 CrowdSimulation::headingDirection(StepScratch& scratch, float heading)
 }
 
 bool CrowdSimulation::walkable(glm::vec2 xz) const {
-    return m_code.walkableAt(m_maps.collision, xz);
+    return m_walkableAt ? m_walkableAt(m_maps.collision, xz) : m_code.walkableAt(m_maps.collision, xz);
+}
+
+bool CrowdSimulation::walkableAhead(std::size_t index, glm::vec2 point) const {
+    AgentMemo& memo = m_memos[index];
+    if (memo.aheadWalkable >= 0 && sameBits(memo.aheadPoint.x, point.x) && sameBits(memo.aheadPoint.y, point.y))
+        return memo.aheadWalkable != 0;
+    const bool answer = walkable(point);
+    memo.aheadPoint = point;
+    memo.aheadWalkable = answer ? 1 : 0;
+    return answer;
 }
 
 float CrowdSimulation::height(glm::vec2 xz) const {
-    return m_code.heightAt(m_maps.heights, xz);
+    return m_heightAt ? m_heightAt(m_maps.heights, xz) : m_code.heightAt(m_maps.heights, xz);
 }
 
 void CrowdSimulation::kill(std::size_t victimIndex) {
@@ -391,6 +401,8 @@ void CrowdSimulation::prefetchPlace(std::size_t place) const {
         const char* far = reinterpret_cast<const char*>(&m_agents[static_cast<std::size_t>(m_cellAgents[place + 2 * kPrefetchAhead].agent)]);
         __builtin_prefetch(far);
         __builtin_prefetch(far + sizeof(CrowdAgent) - 1);
+        // And its memo, which the prefetch below reads when it comes kPrefetchAhead places on.
+        __builtin_prefetch(&m_memos[static_cast<std::size_t>(m_cellAgents[place + 2 * kPrefetchAhead].agent)]);
     }
     if (place + kPrefetchAhead >= m_cellAgents.size()) return;
     // The texel under it and the two rows of heights around it (heightAt() is
@@ -405,8 +417,9 @@ void CrowdSimulation::prefetchPlace(std::size_t place) const {
     __builtin_prefetch(m_maps.collision.walkable.data() + texelOf(m_prefetchCollision, position));
     // And the texel `blocked ahead` reads, where the heading's direction is known.
     const auto agentAhead = static_cast<std::size_t>(m_cellAgents[place + kPrefetchAhead].agent);
-    if (m_lookAhead > 0.0f && sameBits(m_memoHeadings[agentAhead], m_cellAgents[place + kPrefetchAhead].heading)) {
-        const glm::vec2 look = position + m_memoDirections[agentAhead] * m_lookAhead;
+    const AgentMemo& memo = m_memos[agentAhead];
+    if (m_lookAhead > 0.0f && sameBits(memo.heading, m_cellAgents[place + kPrefetchAhead].heading)) {
+        const glm::vec2 look = position + memo.direction * m_lookAhead;
         __builtin_prefetch(m_maps.collision.walkable.data() + texelOf(m_prefetchCollision, look));
     }
     if (m_prefetchHeights.width == 0) return;
@@ -422,8 +435,8 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
     scratch.randomReady = false;
     scratch.memoCount = 1;
     scratch.memoNext = 1;
-    scratch.memoHeadings[0] = m_memoHeadings[index];
-    scratch.memoDirections[0] = m_memoDirections[index];
+    scratch.memoHeadings[0] = m_memos[index].heading;
+    scratch.memoDirections[0] = m_memos[index].direction;
     const Senses senses(*this, index, agent, scratch);
     float speedScale = 1.0f;
     static const std::string kStand = "stand";
@@ -442,7 +455,7 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
         speedScale = now.speedScale;
         animation = &now.animation;
     } else {
-        state = m_code.arbitrateLayers(behaviour.stack, senses);
+        state = m_arbitrateLayers ? m_arbitrateLayers(behaviour.stack, senses) : m_code.arbitrateLayers(behaviour.stack, senses);
         if (state < -1 || state >= static_cast<int>(behaviour.stack.layers.size())) {
             throw std::out_of_range("arbitrateLayers() returned layer " + std::to_string(state) + " of behaviour '" +
                                     behaviour.name + "', which has " +
@@ -474,8 +487,8 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
     // The direction of the heading it ends with, for its next step.
     for (int m = 0; m < scratch.memoCount; ++m) {
         if (sameBits(scratch.memoHeadings[m], agent.heading)) {
-            m_memoHeadings[index] = agent.heading;
-            m_memoDirections[index] = scratch.memoDirections[m];
+            m_memos[index].heading = agent.heading;
+            m_memos[index].direction = scratch.memoDirections[m];
         }
     }
 }

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <type_traits>
 
 namespace stoa {
 
@@ -33,6 +34,7 @@ CrowdSimulation& CrowdSimulation::operator=(CrowdSimulation&&) noexcept = defaul
 CrowdSimulation::CrowdSimulation(const CrowdWorld& world, GroundMaps maps)
     : m_world(world), m_maps(std::move(maps)), m_code(studentCode().crowds),
       m_serialScratch(std::make_unique<StepScratch>()) {
+    takeDirectCalls();
     for (const Behaviour& behaviour : m_world.behaviours) {
         const auto collect = [&](const std::vector<Action>& actions, const std::vector<Condition>& conditions) {
             for (const Action& action : actions)
@@ -83,10 +85,21 @@ CrowdSimulation::CrowdSimulation(const CrowdWorld& world, GroundMaps maps)
     moveOntoHugePages(m_agents, agents);
     placeSamples();
     placeAgents();
-    m_memoHeadings.assign(m_agents.size(), std::numeric_limits<float>::quiet_NaN());
-    m_memoDirections.assign(m_agents.size(), glm::vec2(0.0f));
+    m_memos.assign(m_agents.size(), AgentMemo{std::numeric_limits<float>::quiet_NaN(), glm::vec2(0.0f), glm::vec2(0.0f), -1});
     m_trails.assign(m_agents.size() * trailLength, glm::vec2(0.0f));
     rebuildAgentGrid();
+}
+
+void CrowdSimulation::takeDirectCalls() {
+    // Through StudentFunction still: it hands over the plain function it holds.
+    const auto direct = [](const auto& function, auto& pointer) {
+        using Pointer = std::remove_reference_t<decltype(pointer)>;
+        const Pointer* held = function.template target<Pointer>();
+        pointer = held ? *held : nullptr;
+    };
+    direct(m_code.walkableAt, m_walkableAt);
+    direct(m_code.heightAt, m_heightAt);
+    direct(m_code.arbitrateLayers, m_arbitrateLayers);
 }
 
 void CrowdSimulation::resolveNames() {
@@ -246,6 +259,7 @@ void CrowdSimulation::rebuildAgentGrid() {
     m_cellOf.resize(m_agents.size());
     m_places.assign(m_agents.size(), -1);
     m_living.resize(m_agents.size());
+    // A counting sort: each cell's count at its own index first ...
     for (std::size_t i = 0; i < m_agents.size(); ++i) {
         m_living[i] = m_agents[i].alive ? 1 : 0;
         m_cellOf[i] = -1;
@@ -253,26 +267,27 @@ void CrowdSimulation::rebuildAgentGrid() {
         const glm::vec2 p = (m_agents[i].position - origin) / m_cellSize;
         const int cx = cellIndex(p.x, m_cellsX), cz = cellIndex(p.y, m_cellsZ);
         m_cellOf[i] = cz * m_cellsX + cx;
-        ++m_cellStart[static_cast<std::size_t>(m_cellOf[i]) + 1];
-        ++m_typeCellStart[static_cast<std::size_t>(m_agents[i].type) * cells + static_cast<std::size_t>(m_cellOf[i]) + 1];
+        ++m_cellStart[static_cast<std::size_t>(m_cellOf[i])];
+        ++m_typeCellStart[static_cast<std::size_t>(m_agents[i].type) * cells + static_cast<std::size_t>(m_cellOf[i])];
     }
-    // Counts to starts, the running sum in a register (not read back from the
-    // array it was just stored to, a wait of several cycles per cell).
+    // ... then counts to ends, the running sum in a register (not read back
+    // from the array it was just stored to, a wait of several cycles per cell) ...
     const auto runningSum = [](std::vector<int>& starts) {
         int sum = 0;
-        for (std::size_t c = 1; c < starts.size(); ++c) starts[c] = sum += starts[c];
+        for (std::size_t c = 0; c + 1 < starts.size(); ++c) starts[c] = sum += starts[c];
+        starts.back() = sum;
     };
     runningSum(m_cellStart);
     runningSum(m_typeCellStart);
     m_cellAgents.resize(static_cast<std::size_t>(m_cellStart[cells]));
     m_typeCellAgents.resize(m_cellAgents.size());
-    // Filled in index order: within a cell the agents stand by index, the
-    // order in which the step visits them.
-    for (std::size_t i = 0; i < m_agents.size(); ++i) {
+    // ... and filled from each cell's end back, in falling index order: each
+    // end comes down to its cell's start, and within a cell the agents stand
+    // by index, the order in which the step visits them.
+    for (std::size_t i = m_agents.size(); i-- > 0;) {
         if (m_cellOf[i] < 0) continue;
         const auto cell = static_cast<std::size_t>(m_cellOf[i]);
         const CrowdAgent& agent = m_agents[i];
-        m_places[i] = m_cellStart[cell];
         // Field by field: an entry built whole and then copied waits on its own stores.
         const auto fill = [&](GridEntry& entry) {
             entry.position = agent.position;
@@ -280,14 +295,10 @@ void CrowdSimulation::rebuildAgentGrid() {
             entry.type = agent.type;
             entry.agent = static_cast<int>(i);
         };
-        fill(m_cellAgents[static_cast<std::size_t>(m_cellStart[cell]++)]);
-        fill(m_typeCellAgents[static_cast<std::size_t>(m_typeCellStart[static_cast<std::size_t>(agent.type) * cells + cell]++)]);
+        m_places[i] = --m_cellStart[cell];
+        fill(m_cellAgents[static_cast<std::size_t>(m_places[i])]);
+        fill(m_typeCellAgents[static_cast<std::size_t>(--m_typeCellStart[static_cast<std::size_t>(agent.type) * cells + cell])]);
     }
-    // Each start was moved on to its cell's end: shift them back.
-    for (std::size_t c = cells; c > 0; --c) m_cellStart[c] = m_cellStart[c - 1];
-    m_cellStart[0] = 0;
-    for (std::size_t c = types * cells; c > 0; --c) m_typeCellStart[c] = m_typeCellStart[c - 1];
-    m_typeCellStart[0] = 0;
 }
 
 void CrowdSimulation::stepTheDead() {

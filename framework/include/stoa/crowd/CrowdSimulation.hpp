@@ -135,6 +135,8 @@ private:
     glm::vec2 randomWalkablePoint(glm::vec2 centre, float radius, std::uint32_t salt, const std::string& what,
                                   int line);
     void resolveNames();
+    /// The lab's look-ups and layers as plain functions, where they are (m_walkableAt ...).
+    void takeDirectCalls();
     void measureReaches();
     void rebuildAgentGrid();
     void stepTheDead();
@@ -171,6 +173,8 @@ private:
     }
     void kill(std::size_t victim);
     bool walkable(glm::vec2 xz) const;
+    /// walkable(point) for <blocked ahead> of agent `index`, remembered (m_memos).
+    bool walkableAhead(std::size_t index, glm::vec2 point) const;
     float height(glm::vec2 xz) const;
     /// The nearest living agent of `type` within `radius` of `from` (not `index`), ties to the lower index; -1 if none.
     int nearestAgentOfType(std::size_t index, glm::vec2 from, int type, float radius) const;
@@ -221,10 +225,25 @@ private:
     std::size_t m_place = 0;                   // the place of the agent whose turn it is
     bool m_committing = false;                 // in the parallel step's second pass: the agents after m_place are stepped already
     std::vector<std::uint8_t> m_living;         // per agent, its `alive`, packed for the senses
-    // Per agent: a heading and its direction() (the heading it ended its last
-    // step with, mostly), so that a heading's sine and cosine are computed once.
-    std::vector<float> m_memoHeadings;
-    std::vector<glm::vec2> m_memoDirections;
+    // Per agent, what it computed last and may ask again (side by side: one
+    // cache line): a heading and its direction() (the heading it ended its
+    // last step with, mostly), so that a heading's sine and cosine are
+    // computed once; and the last point its <blocked ahead> asked walkableAt()
+    // about with the answer (-1: none yet). walkableAt() answers for a point
+    // of a map that never changes, so the same bits get the same answer: an
+    // agent that stood still with its heading kept does not ask again.
+    struct AgentMemo {
+        float heading;
+        glm::vec2 direction;
+        glm::vec2 aheadPoint;
+        int aheadWalkable;
+    };
+    mutable std::vector<AgentMemo> m_memos;   // a memo only: the const senses fill it
+    // The lab's functions as plain function pointers where they were handed
+    // over as such (null: called through m_code's StudentFunction).
+    bool (*m_walkableAt)(const CollisionMap&, glm::vec2) = nullptr;
+    float (*m_heightAt)(const HeightField&, glm::vec2) = nullptr;
+    int (*m_arbitrateLayers)(const SubsumptionStack&, const CrowdSenses&) = nullptr;
 
     // The maps as the prefetch reads them: texel = (xz - min) * scale, clamped.
     struct GroundMap {
