@@ -7,7 +7,10 @@
 # mistakes, the hidden cases and their references all live there), without
 # tests/labs/ (they check the solutions against independent implementations of
 # the lab functions, and build only with solutions), without tests/data/out_of_gallery/ and tests/data/variants/
-# (mistakes outside the gallery: patches of the solutions), without .git and build folders. --classroom adds the GitHub Classroom workflow
+# (mistakes outside the gallery: patches of the solutions), without the framework's
+# own tile assignment (framework/src/render/TileLightBinner.cpp: lab 08's answer by
+# another road; the release's editor and showcase draw the student's lists), without
+# .git and build folders. --classroom adds the GitHub Classroom workflow
 # (autograder/classroom/grade.yml) as .github/workflows/grade.yml. Then, unless --no-verify:
 #   1. no student file in labs/ equals its twin in solutions/, and no line that only
 #      the solution has (a line of 40 characters or more) occurs anywhere in the release,
@@ -61,6 +64,7 @@ count=0
 while IFS= read -r -d '' file; do
   case "$file" in
     solutions/*|tests/labs/*|tests/data/out_of_gallery/*|tests/data/variants/*|.git/*|build*/*|site/*|*/__pycache__/*) continue ;;
+    framework/src/render/TileLightBinner.cpp) continue ;;
   esac
   [ -f "$source/$file" ] || continue            # deleted in the work tree
   mkdir -p "$out/$(dirname "$file")"
@@ -72,7 +76,7 @@ if [ "$classroom" -eq 1 ]; then
   cp "$source/autograder/classroom/grade.yml" "$out/.github/workflows/grade.yml"
   count=$((count + 1))
 fi
-echo "make-release: copied $count files into $out (without solutions/, tests/labs/, tests/data/out_of_gallery/, tests/data/variants/, .git, build folders)"
+echo "make-release: copied $count files into $out (without solutions/, tests/labs/, tests/data/out_of_gallery/, tests/data/variants/, the framework's tile assignment, .git, build folders)"
 [ "$verify" -eq 1 ] || exit 0
 
 failures=0
@@ -80,6 +84,7 @@ fail() { echo "make-release: FAIL: $*" >&2; failures=$((failures + 1)); }
 
 echo "== 1. no solution text in the release"
 [ ! -e "$out/solutions" ] || fail "the release has a solutions/ folder"
+[ ! -e "$out/framework/src/render/TileLightBinner.cpp" ] || fail "the release has the framework's tile assignment"
 if [ -d "$source/solutions" ]; then
   lines=$(mktemp)
   for solution_lab in "$source"/solutions/[0-9][0-9]_*/; do

@@ -17,6 +17,7 @@
 // are left out (fewer surfaces in front of the lights: a few more entries).
 
 #include "BenchmarkTiming.hpp"
+#include "TileDepthRanges.hpp"
 #include "TileLightBinner.hpp"
 #include "lab08.hpp"
 
@@ -144,6 +145,7 @@ bool measure(const EditorScene& scene, glm::ivec2 size, int runs) {
     std::vector<std::uint32_t> readBackPacked(depth.size());
 
     TileLightBinner binner;
+    stoa::TileDepthRanges tileDepths;
     TileLightLists fast, reference;
     std::vector<double> readTimes, packedTimes, pixelTimes, tileTimes, referenceTimes, fastTimes;
     bool same = true;
@@ -154,8 +156,8 @@ bool measure(const EditorScene& scene, glm::ivec2 size, int runs) {
         });
         std::vector<DepthRange> before;
         const double pixel = timed([&] { before = perPixelDepthRanges(depth, size, projection, grid); });
-        const double tile = timed([&] { binner.depthRanges(depth.data(), size, projection, grid); });
-        const std::vector<DepthRange>& depths = binner.depthRanges(depth.data(), size, projection, grid);
+        const double tile = timed([&] { tileDepths.compute(depth.data(), size, projection, grid); });
+        const std::vector<DepthRange>& depths = tileDepths.compute(depth.data(), size, projection, grid);
         const double slow = timed([&] { reference = buildTileLightLists(spheres, projection, camera.nearPlane(), grid, depths); });
         const double quick = timed([&] { binner.assign(spheres, projection, camera.nearPlane(), grid, depths, fast); });
         same = same && fast.offsets == reference.offsets && fast.lights == reference.lights;

@@ -12,6 +12,7 @@
 
 #include "catch.hpp"
 #include "TestRandom.hpp"
+#include "TileDepthRanges.hpp"
 #include "TileLightBinner.hpp"
 #include "lab08.hpp"
 
@@ -164,7 +165,7 @@ TEST_CASE("TileLightBinner: every depth open (no tile sky), a light covering the
     }
 }
 
-TEST_CASE("TileLightBinner::depthRanges equals the per-pixel distances' minimum and maximum of every tile, sky left out",
+TEST_CASE("TileDepthRanges::compute equals the per-pixel distances' minimum and maximum of every tile, sky left out",
           "[deferred][binner]") {
     Random random(5);
     for (const glm::ivec2 size : {glm::ivec2(1280, 720), glm::ivec2(100, 70), glm::ivec2(33, 17)}) {
@@ -194,8 +195,8 @@ TEST_CASE("TileLightBinner::depthRanges equals the per-pixel distances' minimum 
                     range.farthest = std::max(range.farthest, distance);
                 }
             }
-        TileLightBinner binner;
-        const std::vector<DepthRange>& ranges = binner.depthRanges(depth.data(), size, projection, camera.grid);
+        stoa::TileDepthRanges tileDepths;
+        const std::vector<DepthRange>& ranges = tileDepths.compute(depth.data(), size, projection, camera.grid);
         REQUIRE(ranges.size() == expected.size());
         CHECK(ranges[0].empty());
         for (std::size_t t = 0; t < ranges.size(); ++t) {

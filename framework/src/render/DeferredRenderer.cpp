@@ -11,7 +11,8 @@
 #include <stoa/scene/ObjectUniforms.hpp>
 #include <stoa/scene/Scene.hpp>
 
-#include "TileLightBinner.hpp"
+#include "TileDepthRanges.hpp"
+#include "TileLightBinner.hpp"   // its code only where STOA_FRAMEWORK_TILE_LISTS (framework/src/render/CMakeLists.txt)
 
 #include <glm/glm.hpp>
 
@@ -78,7 +79,10 @@ DeferredRenderer::DeferredRenderer(const DeferredPrograms& programs)
       m_lightTexels(GL_RGBA32F),
       m_tileOffsets(GL_R32I),
       m_tileLights(GL_R32I),
-      m_binner(std::make_unique<TileLightBinner>()) {
+      m_depthRanges(std::make_unique<TileDepthRanges>()) {
+#if STOA_FRAMEWORK_TILE_LISTS
+    m_binner = std::make_unique<TileLightBinner>();
+#endif
     for (const Program* program : {programs.geometry, programs.forward, programs.ambient, programs.lightVolume,
                                    programs.tiled, programs.views}) {
         STOA_ASSERT(program != nullptr, "DeferredRenderer: every program of DeferredPrograms must be set");
@@ -271,7 +275,16 @@ const std::vector<DepthRange>& DeferredRenderer::tileDepthRanges(const TileGrid&
     // a buffer kept between frames (a new one would be cleared first: 8 MB at 1080p).
     m_depthPixels.resize(static_cast<std::size_t>(m_size.x) * static_cast<std::size_t>(m_size.y));
     m_gBuffer.target().readPixels(-1, 0, 0, m_size.x, m_size.y, GL_DEPTH_COMPONENT, GL_FLOAT, m_depthPixels.data());
-    return m_binner->depthRanges(m_depthPixels.data(), m_size, m_projection, grid);
+    return m_depthRanges->compute(m_depthPixels.data(), m_size, m_projection, grid);
+}
+
+void DeferredRenderer::assignWithFramework(const std::vector<LightSphere>& spheres, const TileGrid& grid,
+                                           const std::vector<DepthRange>& depths) {
+#if STOA_FRAMEWORK_TILE_LISTS
+    m_binner->assign(spheres, m_projection, m_near, grid, depths, m_tiles);
+#else
+    (void)spheres, (void)grid, (void)depths;
+#endif
 }
 
 void DeferredRenderer::drawTiled(const std::vector<PointLight>& lights, const SceneLighting& lighting,
@@ -289,8 +302,10 @@ void DeferredRenderer::drawTiled(const std::vector<PointLight>& lights, const Sc
     grid.viewport = m_size;
     grid.tileSize = settings.tileSize;
     const std::vector<DepthRange>& depths = tileDepthRanges(grid);
-    if (settings.tileLists == TileListSource::Framework)
-        m_binner->assign(spheres, m_projection, m_near, grid, depths, m_tiles);   // the same lists, faster
+    // The framework's assignment is in the course's own tree, not in the student
+    // release (it would be lab 08's answer): there the student's lists draw everywhere.
+    if (settings.tileLists == TileListSource::Framework && m_binner)
+        assignWithFramework(spheres, grid, depths);   // the same lists, faster
     else
         m_tiles = studentCode().deferred.buildTileLightLists(spheres, m_projection, m_near, grid, depths);   // the student's
     STOA_ASSERT(m_tiles.offsets.size() == static_cast<std::size_t>(grid.tileCount()) + 1,

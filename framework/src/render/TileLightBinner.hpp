@@ -30,15 +30,6 @@ namespace stoa {
 
 class TileLightBinner {
 public:
-    /// Each tile's depth range (distances in front of the camera, metres)
-    /// from `windowDepth`, the depth buffer's values in [0, 1] of a
-    /// `size.x` x `size.y` picture, rows from the bottom; 1 is sky. The
-    /// values equal those of a per-pixel conversion then min/max: the
-    /// conversion is monotonic, so it is applied to each tile's extremes only.
-    /// The result stays valid until the next call.
-    const std::vector<DepthRange>& depthRanges(const float* windowDepth, glm::ivec2 size, const glm::mat4& projection,
-                                               const TileGrid& grid);
-
     /// Fills `out` (its buffers are reused from frame to frame) with every
     /// tile's lights: those of `spheres` (view space) whose screen rectangle
     /// under `projection` covers the tile and whose span of distances meets
@@ -58,8 +49,6 @@ private:
     long markTiles(const Footprint& light, int index, int columns, int tileCount);
     void readLists(int tileCount, int words, long entries, TileLightLists& out) const;
 
-    std::vector<DepthRange> m_ranges;
-    std::vector<float> m_lowest, m_highest;   // per tile, scratch of depthRanges()
     std::vector<float> m_tileNearest;         // per tile; NaN where the tile is sky
     std::vector<float> m_tileFarthest;
     std::vector<std::uint64_t> m_bits;        // word w of every tile, then word w + 1: bit i of word w is light 64 w + i

@@ -49,7 +49,8 @@ class Camera;
 class ObjectUniforms;
 class Program;
 class Texture2D;
-class TileLightBinner;   // private to libstoa (framework/src/render)
+class TileDepthRanges;   // private to libstoa (framework/src/render)
+class TileLightBinner;   // private to libstoa, and only in the course's own tree
 
 enum class LightingMode { Forward, Volumes, Tiled };
 
@@ -176,6 +177,8 @@ private:
     void drawTiled(const std::vector<PointLight>& lights, const SceneLighting& lighting, const DeferredSettings& settings,
                    bool countOnly);
     const std::vector<DepthRange>& tileDepthRanges(const TileGrid& grid);
+    void assignWithFramework(const std::vector<LightSphere>& spheres, const TileGrid& grid,
+                             const std::vector<DepthRange>& depths);
     void uploadLights(const std::vector<PointLight>& lights, const std::vector<float>& reaches);
 
     DeferredPrograms m_programs;
@@ -191,7 +194,8 @@ private:
     BufferTexture m_tileLights;
     TextureOverlay m_overlay;
     TileLightLists m_tiles;
-    std::unique_ptr<TileLightBinner> m_binner;   // the tiles' depths, and the framework's lists
+    std::unique_ptr<TileDepthRanges> m_depthRanges;
+    std::unique_ptr<TileLightBinner> m_binner;   // the framework's lists; null in a student release (no TileLightBinner.cpp)
     std::vector<float> m_depthPixels;            // the G-buffer's depth read back, kept between frames
     DeferredStats m_stats;
     glm::mat4 m_view{1.0f}, m_projection{1.0f};
