@@ -168,10 +168,10 @@ int CrowdSimulation::nearestPoint(const std::vector<glm::vec2>& points, glm::vec
 
 float CrowdSimulation::randomOf(StepScratch& scratch, std::size_t index, std::uint32_t salt) const {
     if (!scratch.randomReady) {
-        scratch.randomBase = randomBase(index);
+        scratch.randomBase = stepHash(m_memos[index].agentHash, m_step);   // randomBase(index)
         scratch.randomReady = true;
     }
-    return randomFrom(scratch.randomBase, salt);
+    return randomUnit(scratch.randomBase, salt);
 }
 
 glm::vec2 CrowdSimulation::targetPosition(int found, StepScratch& scratch) const {

@@ -28,6 +28,20 @@ inline std::uint32_t hash32(std::uint32_t x) {
     return x;
 }
 
+/// The per-agent part of an agent's random numbers (CrowdSimulation::randomBase()).
+inline std::uint32_t agentHash(std::uint32_t seed, std::uint32_t agent) { return hash32(seed * 0x9E3779B9u + agent); }
+
+/// The base of an agent's random numbers at a step.
+inline std::uint32_t stepHash(std::uint32_t agentHash, long long step) {
+    return hash32(agentHash ^ static_cast<std::uint32_t>(step) * 0x85EBCA6Bu);
+}
+
+/// A number in [0, 1) for (base, salt).
+inline float randomUnit(std::uint32_t base, std::uint32_t salt) {
+    const std::uint32_t x = hash32(base ^ salt * 0xC2B2AE35u);
+    return static_cast<float>(x >> 8u) * (1.0f / 16777216.0f);
+}
+
 // Sine, cosine and atan2 from + and * only, so that every machine computes the
 // same bits (libm picks its implementation by CPU at run time, and a heading
 // that differs in its last bit sends an agent elsewhere a thousand steps later).

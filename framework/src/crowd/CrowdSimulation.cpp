@@ -85,7 +85,8 @@ CrowdSimulation::CrowdSimulation(const CrowdWorld& world, GroundMaps maps)
     moveOntoHugePages(m_agents, agents);
     placeSamples();
     placeAgents();
-    m_memos.assign(m_agents.size(), AgentMemo{std::numeric_limits<float>::quiet_NaN(), glm::vec2(0.0f), glm::vec2(0.0f), -1});
+    m_memos.assign(m_agents.size(), AgentMemo{std::numeric_limits<float>::quiet_NaN(), glm::vec2(0.0f), glm::vec2(0.0f), -1, 0});
+    for (std::size_t i = 0; i < m_memos.size(); ++i) m_memos[i].agentHash = agentHash(m_world.seed, static_cast<std::uint32_t>(i));
     m_trails.assign(m_agents.size() * trailLength, glm::vec2(0.0f));
     rebuildAgentGrid();
 }
@@ -138,14 +139,10 @@ void CrowdSimulation::resolveNames() {
 }
 
 std::uint32_t CrowdSimulation::randomBase(std::size_t agent) const {
-    const std::uint32_t x = hash32(m_world.seed * 0x9E3779B9u + static_cast<std::uint32_t>(agent));
-    return hash32(x ^ static_cast<std::uint32_t>(m_step) * 0x85EBCA6Bu);
+    return stepHash(agentHash(m_world.seed, static_cast<std::uint32_t>(agent)), m_step);
 }
 
-float CrowdSimulation::randomFrom(std::uint32_t base, std::uint32_t salt) {
-    const std::uint32_t x = hash32(base ^ salt * 0xC2B2AE35u);
-    return static_cast<float>(x >> 8u) * (1.0f / 16777216.0f);
-}
+float CrowdSimulation::randomFrom(std::uint32_t base, std::uint32_t salt) { return randomUnit(base, salt); }
 
 float CrowdSimulation::randomFor(std::size_t agent, std::uint32_t salt) const { return randomFrom(randomBase(agent), salt); }
 

@@ -228,7 +228,7 @@ private:
     // Per agent, what it computed last and may ask again (side by side: one
     // cache line): a heading and its direction() (the heading it ended its
     // last step with, mostly), so that a heading's sine and cosine are
-    // computed once; and the last point its <blocked ahead> asked walkableAt()
+    // computed once; its random numbers' hash of the seed and its index; and the last point its <blocked ahead> asked walkableAt()
     // about with the answer (-1: none yet). walkableAt() answers for a point
     // of a map that never changes, so the same bits get the same answer: an
     // agent that stood still with its heading kept does not ask again.
@@ -237,6 +237,7 @@ private:
         glm::vec2 direction;
         glm::vec2 aheadPoint;
         int aheadWalkable;
+        std::uint32_t agentHash;   // randomBase()'s part that is the agent's alone, hashed once
     };
     mutable std::vector<AgentMemo> m_memos;   // a memo only: the const senses fill it
     // The lab's functions as plain function pointers where they were handed
