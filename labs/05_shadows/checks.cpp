@@ -129,24 +129,51 @@ stoa::CheckResult checkSliceCorners() {
 }
 
 stoa::CheckResult checkCascadeDepthReachesOccluders() {
-    const glm::vec3 light(0.3f, -1.0f, 0.2f);
     const glm::vec3 sceneMin(-40.0f, 0.0f, -40.0f), sceneMax(40.0f, 30.0f, 40.0f);
     // A slice near the ground, seen by a camera 1.7 m up; the scene's box rises far above it.
     const glm::mat4 camera = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.7f, 0.0f));
-    const glm::mat4 matrix = stoa::cascadeLightMatrix(light, transformed(sliceShape(), camera), 1024, sceneMin, sceneMax);
-    for (float x : {sceneMin.x, sceneMax.x})
-        for (float y : {sceneMin.y, sceneMax.y})
-            for (float z : {sceneMin.z, sceneMax.z}) {
-                const glm::vec4 clip = matrix * glm::vec4(x, y, z, 1.0f);
-                const float depth = clip.z / clip.w;
-                if (depth < -1.0001f)
-                    return stoa::CheckResult::fail(
-                        "the scene's corner (" + number(x, 0) + ", " + number(y, 0) + ", " + number(z, 0) +
-                        ") lies nearer the light than the box's near side (NDC z " + number(depth) +
-                        " < -1): an occluder there would cast no shadow into the slice; the depth range must "
-                        "reach towards the light to the scene's bounds (docs: Fitting each cascade)");
-            }
-    return stoa::CheckResult::pass("every corner of the scene's box lies behind the box's near side, as seen from the light");
+    // Suns from four sides, so that each upper corner of the scene's box is once the nearest to the light.
+    for (const glm::vec3 light : {glm::vec3(0.3f, -1.0f, 0.2f), glm::vec3(-0.3f, -1.0f, -0.2f),
+                                  glm::vec3(0.3f, -1.0f, -0.2f), glm::vec3(-0.3f, -1.0f, 0.2f)}) {
+        const glm::mat4 matrix = stoa::cascadeLightMatrix(light, transformed(sliceShape(), camera), 1024, sceneMin, sceneMax);
+        for (float x : {sceneMin.x, sceneMax.x})
+            for (float y : {sceneMin.y, sceneMax.y})
+                for (float z : {sceneMin.z, sceneMax.z}) {
+                    const glm::vec4 clip = matrix * glm::vec4(x, y, z, 1.0f);
+                    const float depth = clip.z / clip.w;
+                    if (depth < -1.0001f)
+                        return stoa::CheckResult::fail(
+                            "with the light along (" + number(light.x, 1) + ", " + number(light.y, 1) + ", " +
+                            number(light.z, 1) + "), the scene's corner (" + number(x, 0) + ", " + number(y, 0) + ", " +
+                            number(z, 0) + ") lies nearer the light than the box's near side (NDC z " + number(depth) +
+                            " < -1): an occluder there would cast no shadow into the slice; the depth range must "
+                            "reach towards the light to every corner of the scene's bounds (docs: Fitting each cascade)");
+                }
+    }
+    return stoa::CheckResult::pass("every corner of the scene's box lies behind the box's near side, as seen from the "
+                                   "light, for suns from four sides");
+}
+
+stoa::CheckResult checkLightBoxHoldsTheScene() {
+    const glm::vec3 sceneMin(-15.0f, -0.5f, -12.0f), sceneMax(15.0f, 7.3f, 18.0f);
+    const glm::vec3 lights[] = {{0.45f, -1.0f, 0.3f}, {-0.6f, -0.8f, 0.1f}, {0.2f, -0.3f, -1.0f}, {0.0f, -1.0f, 0.0f}};
+    for (const glm::vec3& light : lights) {
+        const glm::mat4 matrix = stoa::directionalLightMatrix(light, sceneMin, sceneMax);
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 world((corner & 1) ? sceneMax.x : sceneMin.x, (corner & 2) ? sceneMax.y : sceneMin.y,
+                                  (corner & 4) ? sceneMax.z : sceneMin.z);
+            const glm::vec4 clip = matrix * glm::vec4(world, 1.0f);
+            const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+            if (std::max({std::abs(ndc.x), std::abs(ndc.y), std::abs(ndc.z)}) > 1.0001f)
+                return stoa::CheckResult::fail(
+                    "directionalLightMatrix() with the light along (" + number(light.x) + ", " + number(light.y) + ", " +
+                    number(light.z) + ") puts the scene's corner (" + number(world.x, 1) + ", " + number(world.y, 1) +
+                    ", " + number(world.z, 1) + ") at (" + number(ndc.x, 3) + ", " + number(ndc.y, 3) + ", " +
+                    number(ndc.z, 3) + "), outside [-1, 1]: the box is the corners' extent in light view space, "
+                    "near = -zmax and far = -zmin, widened if at all, never narrowed (docs: The directional light: an orthographic box fitted to the scene)");
+        }
+    }
+    return stoa::CheckResult::pass("the sun's box holds every corner of the scene for four directions, straight down included");
 }
 
 stoa::CheckResult checkCascadeHoldsItsSlice() {

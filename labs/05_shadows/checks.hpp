@@ -31,6 +31,11 @@ stoa::CheckResult checkCascadeDepthReachesOccluders();
 /// light as the bounding sphere reaches (docs: "Fitting each cascade").
 stoa::CheckResult checkCascadeHoldsItsSlice();
 
+/// light_box_holds_the_scene: directionalLightMatrix() puts every corner of the
+/// scene's box inside [-1, 1]^3, for four light directions, straight down
+/// included (docs: "The directional light: an orthographic box fitted to the scene").
+stoa::CheckResult checkLightBoxHoldsTheScene();
+
 /// texel_snapping: as the slice moves by less than a texel, a fixed world point
 /// moves through the map by whole texels only; as the slice turns, the box keeps
 /// its size (docs: "Texel snapping").

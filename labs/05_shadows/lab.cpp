@@ -228,6 +228,7 @@ public:
         if (spec.check == "slice_corners") return lab05::checkSliceCorners();
         if (spec.check == "cascade_depth_reaches_occluders") return lab05::checkCascadeDepthReachesOccluders();
         if (spec.check == "cascade_holds_its_slice") return lab05::checkCascadeHoldsItsSlice();
+        if (spec.check == "light_box_holds_the_scene") return lab05::checkLightBoxHoldsTheScene();
         if (spec.check == "texel_snapping") return lab05::checkTexelSnapping();
         return Lab::runCheck(spec);
     }
