@@ -43,6 +43,16 @@ CheckResult pickWithinACircleBody() {
         return CheckResult::fail("value 3 exactly 4 pixels away, radius 4: expected object 2, got " + std::to_string(got));
     if (int got = stoa::objectAtPixel(stencil, {10, 7}, 3); got != -1)
         return CheckResult::fail("value 3 4 pixels away, radius 3: expected nothing (-1), got " + std::to_string(got));
+    // The same along the column, above and below: rows count as columns do.
+    for (const int dy : {-4, 4, -3, 3}) {
+        stencil = background(21, 15);
+        put(stencil, 10, 7 + dy, 4);
+        if (int got = stoa::objectAtPixel(stencil, {10, 7}, 4); got != 3)
+            return CheckResult::fail("value 4 alone, " + std::to_string(std::abs(dy)) + " pixels " +
+                                     (dy < 0 ? "above" : "below") + " the click at " + pixel(10, 7) +
+                                     ", radius 4: expected object 3, got " + std::to_string(got) +
+                                     " (the circle dx^2 + dy^2 <= R^2 holds rows as far as columns, its edge included)");
+    }
     stencil = background(21, 15);
     put(stencil, 13, 4, 5);   // 3 right, 3 up: 4.24 pixels away, inside the square of side 2 x 4, outside the circle
     if (int got = stoa::objectAtPixel(stencil, {10, 7}, 4); got != -1)
