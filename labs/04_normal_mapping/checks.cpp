@@ -11,7 +11,6 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -23,11 +22,8 @@ namespace {
 // A small height map of random heights (a fixed seed: the same map every run).
 stoa::Image randomHeights(int width, int height) {
     stoa::Image image(width, height, 1);
-    std::uint32_t state = 20261123u;
-    for (int i = 0; i < width * height; ++i) {
-        state = state * 1664525u + 1013904223u;   // a linear congruential generator
-        image.data()[i] = static_cast<std::uint8_t>(state >> 24);
-    }
+    stoa::CheckRandom random(20261123u);
+    for (int i = 0; i < width * height; ++i) image.data()[i] = random.nextByte();
     return image;
 }
 

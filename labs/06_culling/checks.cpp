@@ -10,7 +10,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
-#include <cstdint>
 #include <string>
 
 namespace lab06 {
@@ -56,15 +55,6 @@ stoa::CheckResult checkSphereTurnedAboutX() {
 
 namespace {
 
-// Numbers in [0, 1) from a fixed seed: the same points every run.
-struct Lcg {
-    std::uint32_t state = 20261129u;
-    float next() {
-        state = state * 1664525u + 1013904223u;
-        return static_cast<float>(state >> 8) / 16777216.0f;
-    }
-};
-
 const char* const kSideNames[6] = {"left", "right", "bottom", "top", "near", "far"};
 
 // How far inside side `side` of the clip volume the normalized device point is
@@ -104,7 +94,7 @@ stoa::CheckResult checkPlanesBoundClipSpace() {
     }
     // Points in and around the clip volume, carried back to the world: each
     // plane must say inside exactly where its side of the volume does.
-    Lcg random;
+    stoa::CheckRandom random(20261129u);
     int tried = 0;
     for (int i = 0; i < 4000; ++i) {
         const glm::vec3 ndc(2.6f * random.next() - 1.3f, 2.6f * random.next() - 1.3f, 2.2f * random.next() - 1.1f);

@@ -9,7 +9,6 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -21,13 +20,9 @@ namespace {
 // A small triangle whose centroid is at x, with y and z in [0, 1) from a fixed
 // sequence: the same triangles every run.
 struct TriangleMaker {
-    std::uint32_t state = 20261129u;
-    float next() {
-        state = state * 1664525u + 1013904223u;
-        return static_cast<float>(state >> 8) / 16777216.0f;
-    }
+    stoa::CheckRandom random{20261129u};
     stoa::Triangle at(float x) {
-        const float y = next(), z = next();
+        const float y = random.next(), z = random.next();
         return {{x - 0.05f, y, z}, {x + 0.05f, y, z}, {x, y + 0.1f, z + 0.05f}};
     }
 };

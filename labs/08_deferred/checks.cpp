@@ -15,23 +15,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace lab08 {
 
 namespace {
-
-// Numbers in [0, 1) from a fixed seed: the same data every run.
-struct Lcg {
-    std::uint32_t state = 20261129u;
-    float next() {
-        state = state * 1664525u + 1013904223u;
-        return static_cast<float>(state >> 8) / 16777216.0f;
-    }
-    float between(float low, float high) { return low + (high - low) * next(); }
-};
 
 std::string number(float value) { return stoa::checkNumber(value, 4); }
 
@@ -60,7 +49,7 @@ struct TileScene {
 
 // Lights whose spheres lie wholly beyond the near plane, their centres anywhere
 // from well inside the picture to a little past each edge.
-std::vector<stoa::LightSphere> lightsAround(const TileScene& scene, Lcg& random, int count) {
+std::vector<stoa::LightSphere> lightsAround(const TileScene& scene, stoa::CheckRandom& random, int count) {
     std::vector<stoa::LightSphere> lights;
     const glm::mat4 back = glm::inverse(scene.projection);
     while (static_cast<int>(lights.size()) < count) {
@@ -127,7 +116,7 @@ stoa::CheckResult checkReachSolvesTheFalloff() {
 stoa::CheckResult checkTileRangesHoldTheSphere() {
     const TileScene scene;
     const glm::ivec2 tiles = scene.grid.tiles();
-    Lcg random;
+    stoa::CheckRandom random(20261129u);
     int landed = 0;
     for (const stoa::LightSphere& light : lightsAround(scene, random, 300)) {
         const stoa::TileRange range = stoa::lightTileRange(light, scene.projection, scene.near, scene.grid);
@@ -159,7 +148,7 @@ stoa::CheckResult checkTileRangesHoldTheSphere() {
 
 stoa::CheckResult checkTileListsMatchTheRanges() {
     const TileScene scene;
-    Lcg random;
+    stoa::CheckRandom random(20261129u);
     const std::vector<stoa::LightSphere> lights = lightsAround(scene, random, 60);
     std::vector<stoa::DepthRange> depths(static_cast<std::size_t>(scene.grid.tileCount()));
     for (stoa::DepthRange& range : depths) {

@@ -150,11 +150,8 @@ stoa::CheckResult checkBlurFootprint(stoa::DeferredRenderer& renderer, stoa::Amb
 
     // Levels row by row from the bottom, as OpenGL counts rows and gl_FragCoord does.
     std::vector<std::uint8_t> levels(static_cast<std::size_t>(size.x * size.y));
-    std::uint32_t state = 20261129u;
-    for (std::uint8_t& level : levels) {
-        state = state * 1664525u + 1013904223u;
-        level = static_cast<std::uint8_t>(state >> 24);
-    }
+    stoa::CheckRandom random(20261129u);
+    for (std::uint8_t& level : levels) level = random.nextByte();
     STOA_GL_CALL(glBindTexture(GL_TEXTURE_2D, occlusion.raw().id()));
     STOA_GL_CALL(glPixelStorei(GL_UNPACK_ALIGNMENT, 1));
     STOA_GL_CALL(glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size.x, size.y, GL_RED, GL_UNSIGNED_BYTE, levels.data()));

@@ -9,7 +9,6 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -17,15 +16,6 @@
 namespace lab10 {
 
 namespace {
-
-// Numbers in [0, 1) from a fixed seed: the same data every run.
-struct Lcg {
-    std::uint32_t state = 20261125u;
-    float next() {
-        state = state * 1664525u + 1013904223u;
-        return static_cast<float>(state >> 8) / 16777216.0f;
-    }
-};
 
 std::string describe(glm::vec2 p) {
     char text[64];
@@ -41,7 +31,7 @@ stoa::CheckResult pointingToDocs(stoa::CheckResult result, const std::string& se
 }
 
 stoa::CheckResult heightsAtTexelCentresBody() {
-    Lcg random;
+    stoa::CheckRandom random(20261125u);
     stoa::HeightField field;
     field.grid.width = 9;
     field.grid.height = 6;
@@ -119,7 +109,7 @@ stoa::CheckResult heightsAtTexelCentresBody() {
 stoa::CheckResult walkableAtTexelsBody() {
     // A map that is not square, with texels that are not square either, over a
     // footprint away from the origin: rows and columns must not be confused.
-    Lcg random;
+    stoa::CheckRandom random(20261125u);
     stoa::CollisionMap map;
     map.grid.width = 7;
     map.grid.height = 4;
@@ -161,7 +151,7 @@ stoa::CheckResult walkableAtTexelsBody() {
 }
 
 stoa::CheckResult blendedNormalsUnitBody() {
-    Lcg random;
+    stoa::CheckRandom random(20261125u);
     stoa::Md2Frame first, second;
     const auto unit = [&]() {
         for (;;) {

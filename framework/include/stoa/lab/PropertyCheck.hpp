@@ -18,6 +18,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -31,6 +32,24 @@ struct CheckResult {
 
     static CheckResult pass(std::string message) { return {true, std::move(message)}; }
     static CheckResult fail(std::string message) { return {false, std::move(message)}; }
+};
+
+/// A check's own inputs, from a fixed seed: the same numbers on every run and
+/// every machine (a linear congruential generator; not std::mt19937's
+/// distributions, whose results the C++ standard leaves to each library).
+class CheckRandom {
+public:
+    explicit CheckRandom(std::uint32_t seed) : m_state(seed) {}
+    /// A number in [0, 1), 24 bits.
+    float next() { return static_cast<float>(step() >> 8) / 16777216.0f; }
+    /// A number in [low, high).
+    float between(float low, float high) { return low + (high - low) * next(); }
+    /// A byte, 0 to 255.
+    std::uint8_t nextByte() { return static_cast<std::uint8_t>(step() >> 24); }
+
+private:
+    std::uint32_t step() { return m_state = m_state * 1664525u + 1013904223u; }
+    std::uint32_t m_state;
 };
 
 /// A number for a check's message, with `decimals` digits after the point: "2.39".
