@@ -103,21 +103,24 @@ void CrowdSimulation::forEachNear(glm::vec2 from, float radius, Visit&& visit) c
     }
 }
 
+CrowdSimulation::CellBlock CrowdSimulation::cellsAround(glm::vec2 from, int type, float radius) const {
+    const glm::vec2 origin = m_maps.collision.grid.footprintMin;
+    const glm::vec2 low = (from - radius - origin) / m_cellSize;
+    const glm::vec2 high = (from + radius - origin) / m_cellSize;
+    return {static_cast<std::size_t>(type) * static_cast<std::size_t>(m_cellsX) * m_cellsZ, cellIndex(low.x, m_cellsX),
+            cellIndex(high.x, m_cellsX), cellIndex(low.y, m_cellsZ), cellIndex(high.y, m_cellsZ)};
+}
+
 int CrowdSimulation::nearestAgentOfType(std::size_t index, glm::vec2 from, int type, float radius) const {
     if (type < 0) return -1;
     int best = -1;
     float bestDistance = radius * radius;
-    const glm::vec2 origin = m_maps.collision.grid.footprintMin;
-    const glm::vec2 low = (from - radius - origin) / m_cellSize;
-    const glm::vec2 high = (from + radius - origin) / m_cellSize;
-    const int x0 = cellIndex(low.x, m_cellsX), x1 = cellIndex(high.x, m_cellsX);
-    const int z0 = cellIndex(low.y, m_cellsZ), z1 = cellIndex(high.y, m_cellsZ);
-    const std::size_t base = static_cast<std::size_t>(type) * static_cast<std::size_t>(m_cellsX) * m_cellsZ;
-    for (int cz = z0; cz <= z1; ++cz) {
-        const std::size_t row = base + static_cast<std::size_t>(cz) * m_cellsX;
+    const CellBlock cells = cellsAround(from, type, radius);
+    for (int cz = cells.z0; cz <= cells.z1; ++cz) {
+        const std::size_t row = cells.base + static_cast<std::size_t>(cz) * m_cellsX;
         // The cells of one row of the type's grid lie side by side: one run of entries.
-        const int end = m_typeCellStart[row + static_cast<std::size_t>(x1) + 1];
-        for (int k = m_typeCellStart[row + static_cast<std::size_t>(x0)]; k < end; ++k) {
+        const int end = m_typeCellStart[row + static_cast<std::size_t>(cells.x1) + 1];
+        for (int k = m_typeCellStart[row + static_cast<std::size_t>(cells.x0)]; k < end; ++k) {
             const GridEntry& entry = m_typeCellAgents[static_cast<std::size_t>(k)];
             const float d = distanceSquared(entry.position, from);
             // Ties go to the lower index, whatever order the cells are visited in.
@@ -134,16 +137,11 @@ int CrowdSimulation::nearestAgentOfType(std::size_t index, glm::vec2 from, int t
 bool CrowdSimulation::anyAgentOfType(std::size_t index, glm::vec2 from, int type, float radius) const {
     if (type < 0) return false;
     const float r2 = radius * radius;
-    const glm::vec2 origin = m_maps.collision.grid.footprintMin;
-    const glm::vec2 low = (from - radius - origin) / m_cellSize;
-    const glm::vec2 high = (from + radius - origin) / m_cellSize;
-    const int x0 = cellIndex(low.x, m_cellsX), x1 = cellIndex(high.x, m_cellsX);
-    const int z0 = cellIndex(low.y, m_cellsZ), z1 = cellIndex(high.y, m_cellsZ);
-    const std::size_t base = static_cast<std::size_t>(type) * static_cast<std::size_t>(m_cellsX) * m_cellsZ;
-    for (int cz = z0; cz <= z1; ++cz) {
-        const std::size_t row = base + static_cast<std::size_t>(cz) * m_cellsX;
-        const int end = m_typeCellStart[row + static_cast<std::size_t>(x1) + 1];
-        for (int k = m_typeCellStart[row + static_cast<std::size_t>(x0)]; k < end; ++k) {
+    const CellBlock cells = cellsAround(from, type, radius);
+    for (int cz = cells.z0; cz <= cells.z1; ++cz) {
+        const std::size_t row = cells.base + static_cast<std::size_t>(cz) * m_cellsX;
+        const int end = m_typeCellStart[row + static_cast<std::size_t>(cells.x1) + 1];
+        for (int k = m_typeCellStart[row + static_cast<std::size_t>(cells.x0)]; k < end; ++k) {
             const GridEntry& entry = m_typeCellAgents[static_cast<std::size_t>(k)];
             if (distanceSquared(entry.position, from) <= r2 && static_cast<std::size_t>(entry.agent) != index &&
                 m_living[static_cast<std::size_t>(entry.agent)])

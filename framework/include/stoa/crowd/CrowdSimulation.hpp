@@ -180,6 +180,13 @@ private:
     int nearestAgentOfType(std::size_t index, glm::vec2 from, int type, float radius) const;
     /// Whether there is one (the same as nearestAgentOfType() >= 0, stopping at the first).
     bool anyAgentOfType(std::size_t index, glm::vec2 from, int type, float radius) const;
+    /// The cells of type `type`'s grid that a circle around `from` touches: rows
+    /// z0..z1, columns x0..x1, the grid starting at entry `base` of the cell starts.
+    struct CellBlock {
+        std::size_t base;
+        int x0, x1, z0, z1;
+    };
+    CellBlock cellsAround(glm::vec2 from, int type, float radius) const;
     /// Calls visit(entry) for every grid entry within `radius` of `from`.
     template <typename Visit>
     void forEachNear(glm::vec2 from, float radius, Visit&& visit) const;
