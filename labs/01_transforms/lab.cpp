@@ -29,6 +29,7 @@ public:
 
     stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
         if (spec.check == "camera_limits") return lab01::checkCameraLimits();
+        if (spec.check == "matrices_map_the_frustum") return lab01::checkMatricesMapTheFrustum();
         return Lab::runCheck(spec);
     }
 
