@@ -186,8 +186,39 @@ stoa::CheckResult checkTangentsFollowTheUvs() {
                                            " (the sign of dot(cross(N, T), B), B from the same system) "
                                            "(docs: Handedness)");
     }
+    // Two triangles sharing an edge, whose uvs are stretched differently: the shared
+    // vertices' tangent is the sum of the two triangles' T = dp/du, as solved (each
+    // triangle's own scale), then made unit: not a sum of unit vectors, nor of T
+    // scaled some other way.
+    {
+        stoa::Mesh mesh;
+        const glm::vec3 positions[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0.5f, 0}};
+        const glm::vec2 uvs[] = {{0, 0}, {0.5f, 0.25f}, {-0.25f, 0.5f}, {-1.5f, 0.4f}};
+        for (int i = 0; i < 4; ++i) {
+            stoa::Vertex vertex{};
+            vertex.position = positions[i];
+            vertex.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+            vertex.uv = uvs[i];
+            mesh.vertices.push_back(vertex);
+        }
+        mesh.indices = {0, 1, 2, 0, 2, 3};
+        stoa::computeTangents(mesh);
+        // dp/du of a triangle: the first column of the inverse of its uv edges' 2 x 2 map.
+        const auto alongU = [&](int a, int b, int c) {
+            const glm::mat2 edges(glm::vec2(positions[b] - positions[a]), glm::vec2(positions[c] - positions[a]));
+            const glm::mat2 uvEdges(uvs[b] - uvs[a], uvs[c] - uvs[a]);
+            return glm::vec3((edges * glm::inverse(uvEdges))[0], 0.0f);
+        };
+        const glm::vec3 expected = glm::normalize(alongU(0, 1, 2) + alongU(0, 2, 3));
+        const glm::vec4 t = mesh.vertices[0].tangent;
+        if (!finite(t) || glm::length(glm::vec3(t) - expected) > 1e-3f)
+            return stoa::CheckResult::fail("computeTangents() gives the vertex two triangles share, whose uvs are "
+                                           "stretched differently, the tangent " + tangentText(t) + "; the sum of "
+                                           "the two triangles' T (each as its 2 x 2 system gives it) points along " +
+                                           tangentText(glm::vec4(expected, 1.0f)) + " (docs: The tangent frame)");
+    }
     return stoa::CheckResult::pass("tangents and handedness follow u and v for six uv maps that scale, shear, "
-                                   "mirror and turn");
+                                   "mirror and turn, and a shared vertex sums its triangles' T as solved");
 }
 
 } // namespace lab04

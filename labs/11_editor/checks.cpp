@@ -97,6 +97,16 @@ CheckResult pickWithinACircleBody() {
                                      "; keep the search's columns within 0 to width - 1, or it reads the next "
                                      "row's pixels (docs: From the mouse to a stencil value)");
     }
+    // Past the read-back's last row: two guard rows of values after the picture (the
+    // read-back says 15 rows): a search that runs past the top reads it.
+    stencil = background(21, 15);
+    stencil.values.resize(static_cast<std::size_t>(21) * 17, 9);   // two rows past it
+    for (const glm::ivec2 click : {glm::ivec2(10, 0), glm::ivec2(10, 1)})
+        if (int got = stoa::objectAtPixel(stencil, click, 3); got != -1)
+            return CheckResult::fail("a click at " + pixel(click.x, click.y) + " near the top of a read-back with no "
+                                     "object, radius 3, picked object " + std::to_string(got) +
+                                     "; keep the search's rows within 0 to height - 1, or it reads past the "
+                                     "read-back (docs: From the mouse to a stencil value)");
     return CheckResult::pass("the radius is a circle including its edge, ties go to the read-back's order, "
                              "the background and outside pick nothing, the corners pick what is there, and "
                              "the search stays within its row at the edges");
