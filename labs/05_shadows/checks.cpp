@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace lab05 {
 
@@ -159,9 +160,11 @@ stoa::CheckResult checkLightBoxHoldsTheScene() {
     const glm::vec3 lights[] = {{0.45f, -1.0f, 0.3f}, {-0.6f, -0.8f, 0.1f}, {0.2f, -0.3f, -1.0f}, {0.0f, -1.0f, 0.0f}};
     for (const glm::vec3& light : lights) {
         const glm::mat4 matrix = stoa::directionalLightMatrix(light, sceneMin, sceneMax);
-        for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 world((corner & 1) ? sceneMax.x : sceneMin.x, (corner & 2) ? sceneMax.y : sceneMin.y,
-                                  (corner & 4) ? sceneMax.z : sceneMin.z);
+        std::vector<glm::vec3> corners;
+        for (const float x : {sceneMin.x, sceneMax.x})
+            for (const float y : {sceneMin.y, sceneMax.y})
+                for (const float z : {sceneMin.z, sceneMax.z}) corners.emplace_back(x, y, z);
+        for (const glm::vec3& world : corners) {
             const glm::vec4 clip = matrix * glm::vec4(world, 1.0f);
             const glm::vec3 ndc = glm::vec3(clip) / clip.w;
             if (std::max({std::abs(ndc.x), std::abs(ndc.y), std::abs(ndc.z)}) > 1.0001f)

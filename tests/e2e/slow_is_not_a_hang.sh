@@ -1,8 +1,9 @@
 #!/bin/sh
-# Slow is not a hang: lab 07 with a BVH that never splits (a correct solution,
-# far too slow; tests/data/variants/07_picking/bvh_never_splits.equivalent) loses
-# its ray-cast cases as "too slow", pointed to the page's "How fast" section,
-# and every other case is graded and passes.
+# Slow is not a hang: lab 07 with a BVH that never splits (it finds the right
+# hits, far too slowly; tests/data/variants/07_picking/bvh_never_splits.equivalent)
+# loses its ray-cast cases as "too slow", pointed to the page's "How fast"
+# section, and the check of the tree's splits (bvh_cheapest_split) as "does not
+# hold"; every other case is graded and passes.
 #   slow_is_not_a_hang.sh STOA_GRADE PROGRAM_DIR WORK_DIR
 set -eu
 grade=$1 bin=$2 work=$3
@@ -25,6 +26,9 @@ for test in tests:
         slow.append(name)
         if "too slow: still computing" not in output or '"How fast"' not in output:
             problems.append(f"{name}: not reported as too slow with the 'How fast' pointer: {output!r}")
+    elif name.endswith("/bvh_cheapest_split"):
+        if passed or "does not hold" not in output:
+            problems.append(f"{name}: a tree that never splits should fail the split check: {output!r}")
     elif not passed:
         problems.append(f"{name}: lost, though only the ray casts are slow: {output!r}")
 if not slow:
