@@ -163,7 +163,7 @@ void EditorLabApp::drawAgentInspector(const CrowdSimulation& crowd, std::size_t 
     const CrowdAgent& agent = crowd.agents()[index];
     const AgentType& type = crowd.world().types[static_cast<std::size_t>(agent.type)];
     ImGui::Text("agent %zu: %s (behaviour %s)", index, type.name.c_str(), type.behaviour.c_str());
-    ImGui::Text("state %s, animation %s%s", crowd.stateName(index).c_str(), agent.animation.c_str(),
+    ImGui::Text("state %s, animation %s%s", crowd.stateName(index).c_str(), crowd.animationName(agent.animation).c_str(),
                 agent.alive ? "" : ", waiting to respawn");
     ImGui::Text("at (%.2f, %.2f, %.2f), heading %.0f degrees", agent.position.x, agent.y, agent.position.y,
                 glm::degrees(agent.heading));

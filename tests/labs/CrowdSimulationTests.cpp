@@ -386,6 +386,34 @@ TEST_CASE("Crowd: the wolves attack goats, and a goat comes back after respawnSe
     CHECK(comebacks > 0);
 }
 
+TEST_CASE("Crowd: every agent plays the animation of the state or layer it is in", "[crowd][simulation]") {
+    const Example e = example("predators_prey.xml");
+    CrowdSimulation crowd = crowdWith(e.world, e.maps, testCode());
+    CHECK(crowd.animationName(0) == "stand");
+    std::vector<std::string> seen;
+    for (int step = 0; step <= 1500; ++step) {
+        for (std::size_t i = 0; i < crowd.agents().size(); ++i) {
+            const CrowdAgent& agent = crowd.agents()[i];
+            if (!agent.alive) continue;
+            const AgentType& type = crowd.world().types[static_cast<std::size_t>(agent.type)];
+            const Behaviour& behaviour = crowd.world().behaviours[static_cast<std::size_t>(type.behaviourIndex)];
+            // No layer fired (state -1): the agent stands.
+            const std::string expected =
+                agent.state < 0 ? "stand"
+                : behaviour.kind == Behaviour::Kind::StateMachine
+                    ? behaviour.machine.states[static_cast<std::size_t>(agent.state)].animation
+                    : behaviour.stack.layers[static_cast<std::size_t>(agent.state)].animation;
+            INFO("agent " << i << " at step " << step << " in " << crowd.stateName(i));
+            REQUIRE(crowd.animationName(agent.animation) == expected);
+            if (std::find(seen.begin(), seen.end(), expected) == seen.end()) seen.push_back(expected);
+        }
+        crowd.step();
+    }
+    // The wolves run, pounce and rest, the goats run and eat: every animation the world names is played.
+    std::sort(seen.begin(), seen.end());
+    CHECK(seen == std::vector<std::string>{"attack", "eat", "run", "stand"});
+}
+
 TEST_CASE("Crowd: a state or layer out of range from the lab code throws std::out_of_range naming the function",
           "[crowd][simulation]") {
     const GroundMaps maps = flatGround({-10.0f, -10.0f}, {10.0f, 10.0f}, 20);

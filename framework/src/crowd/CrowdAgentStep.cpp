@@ -10,6 +10,7 @@
 
 #include <glm/trigonometric.hpp>
 
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 
@@ -105,10 +106,23 @@ void CrowdSimulation::forEachNear(glm::vec2 from, float radius, Visit&& visit) c
 
 CrowdSimulation::CellBlock CrowdSimulation::cellsAround(glm::vec2 from, int type, float radius) const {
     const glm::vec2 origin = m_maps.collision.grid.footprintMin;
+    const std::size_t base = static_cast<std::size_t>(type) * static_cast<std::size_t>(m_cellsX) * m_cellsZ;
+#if defined(__SSE2__)
+    // The block's four edges side by side, each lane the same operations in
+    // the same order as below (x + -r is x - r exactly; max then min is the
+    // clamp for any number that is not NaN), so the same cells.
+    const __m128 edges = _mm_add_ps(_mm_setr_ps(from.x, from.y, from.x, from.y), _mm_setr_ps(-radius, -radius, radius, radius));
+    __m128 cells = _mm_div_ps(_mm_sub_ps(edges, _mm_setr_ps(origin.x, origin.y, origin.x, origin.y)), _mm_set1_ps(m_cellSize));
+    cells = _mm_min_ps(_mm_max_ps(cells, _mm_setzero_ps()), _mm_loadu_ps(m_lastCell));
+    alignas(16) int index[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(index), _mm_cvttps_epi32(cells));
+    return {base, index[0], index[2], index[1], index[3]};
+#else
     const glm::vec2 low = (from - radius - origin) / m_cellSize;
     const glm::vec2 high = (from + radius - origin) / m_cellSize;
-    return {static_cast<std::size_t>(type) * static_cast<std::size_t>(m_cellsX) * m_cellsZ, cellIndex(low.x, m_cellsX),
-            cellIndex(high.x, m_cellsX), cellIndex(low.y, m_cellsZ), cellIndex(high.y, m_cellsZ)};
+    return {base, cellIndex(low.x, m_cellsX), cellIndex(high.x, m_cellsX), cellIndex(low.y, m_cellsZ),
+            cellIndex(high.y, m_cellsZ)};
+#endif
 }
 
 int CrowdSimulation::nearestAgentOfType(std::size_t index, glm::vec2 from, int type, float radius) const {
@@ -395,35 +409,40 @@ void CrowdSimulation::move(CrowdAgent& agent, StepScratch& scratch) {
 void CrowdSimulation::prefetchPlace(std::size_t place) const {
     // The agents' own states lie in index order, not in the step's: each is
     // fetched twice as far ahead as the map texels it will read.
-    if (place + 2 * kPrefetchAhead < m_cellAgents.size()) {
-        const char* far = reinterpret_cast<const char*>(&m_agents[static_cast<std::size_t>(m_cellAgents[place + 2 * kPrefetchAhead].agent)]);
-        __builtin_prefetch(far);
-        __builtin_prefetch(far + sizeof(CrowdAgent) - 1);
+    const std::size_t count = m_cellAgents.size();
+    const GridEntry* entries = m_cellAgents.data();
+    if (place + 2 * kPrefetchAhead < count) {
+        const auto far = static_cast<std::size_t>(entries[place + 2 * kPrefetchAhead].agent);
+        const char* state = reinterpret_cast<const char*>(m_agents.data() + far);
+        __builtin_prefetch(state);
+        __builtin_prefetch(state + sizeof(CrowdAgent) - 1);
         // And its memo, which the prefetch below reads when it comes kPrefetchAhead places on.
-        __builtin_prefetch(&m_memos[static_cast<std::size_t>(m_cellAgents[place + 2 * kPrefetchAhead].agent)]);
+        __builtin_prefetch(m_memos.data() + far);
     }
-    if (place + kPrefetchAhead >= m_cellAgents.size()) return;
+    if (place + kPrefetchAhead >= count) return;
     // The texel under it and the two rows of heights around it (heightAt() is
     // bilinear between texel centres); the texel under it is the one the move reads.
-    const glm::vec2 position = m_cellAgents[place + kPrefetchAhead].position;
-    const auto texelOf = [](const GroundMap& map, glm::vec2 xz) {
+    // A prefetch never faults, so an address off the map needs no clamp: the
+    // address is computed as a number, and a point off the map fetches nothing useful.
+    const GridEntry& entry = entries[place + kPrefetchAhead];
+    const auto texelAddress = [](const GroundMap& map, std::uintptr_t base, std::size_t bytes, glm::vec2 xz) {
         const glm::vec2 t = (xz - map.min) * map.scale;
-        const int col = std::clamp(static_cast<int>(t.x), 0, map.lastCol);
-        const int row = std::clamp(static_cast<int>(t.y), 0, map.lastRow);
-        return static_cast<std::size_t>(row) * map.width + static_cast<std::size_t>(col);
+        const auto col = static_cast<std::intptr_t>(static_cast<int>(t.x));
+        const auto row = static_cast<std::intptr_t>(static_cast<int>(t.y));
+        return reinterpret_cast<const void*>(base + static_cast<std::uintptr_t>((row * static_cast<std::intptr_t>(map.width) + col) *
+                                                                                 static_cast<std::intptr_t>(bytes)));
     };
-    __builtin_prefetch(m_maps.collision.walkable.data() + texelOf(m_prefetchCollision, position));
+    const auto walkable = reinterpret_cast<std::uintptr_t>(m_maps.collision.walkable.data());
+    __builtin_prefetch(texelAddress(m_prefetchCollision, walkable, 1, entry.position));
     // And the texel `blocked ahead` reads, where the heading's direction is known.
-    const auto agentAhead = static_cast<std::size_t>(m_cellAgents[place + kPrefetchAhead].agent);
-    const AgentMemo& memo = m_memos[agentAhead];
-    if (m_lookAhead > 0.0f && sameBits(memo.heading, m_cellAgents[place + kPrefetchAhead].heading)) {
-        const glm::vec2 look = position + memo.direction * m_lookAhead;
-        __builtin_prefetch(m_maps.collision.walkable.data() + texelOf(m_prefetchCollision, look));
-    }
+    const AgentMemo& memo = m_memos[static_cast<std::size_t>(entry.agent)];
+    if (m_lookAhead > 0.0f && sameBits(memo.heading, entry.heading))
+        __builtin_prefetch(texelAddress(m_prefetchCollision, walkable, 1, entry.position + memo.direction * m_lookAhead));
     if (m_prefetchHeights.width == 0) return;
-    const float* heights = m_maps.heights.values.data() + texelOf(m_prefetchHeights, position);
-    __builtin_prefetch(heights);
-    __builtin_prefetch(heights + m_prefetchHeights.width);
+    const auto heights = reinterpret_cast<std::uintptr_t>(m_maps.heights.values.data());
+    const char* texel = static_cast<const char*>(texelAddress(m_prefetchHeights, heights, sizeof(float), entry.position));
+    __builtin_prefetch(texel);
+    __builtin_prefetch(texel + m_prefetchHeights.width * sizeof(float));
 }
 
 void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratch& scratch) {
@@ -437,13 +456,13 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
     scratch.memoDirections[0] = m_memos[index].direction;
     const Senses senses(*this, index, agent, scratch);
     float speedScale = 1.0f;
-    static const std::string kStand = "stand";
-    const std::string* animation = &kStand;
+    int animation = 0;   // "stand", where no layer fires
     int state = -1;
     std::vector<const Action*>& actions = scratch.actions;
     actions.clear();
     if (behaviour.kind == Behaviour::Kind::StateMachine) {
-        state = m_code.stepStateMachine(behaviour.machine, agent.state, senses, actions);
+        state = m_stepStateMachine ? m_stepStateMachine(behaviour.machine, agent.state, senses, actions)
+                                   : m_code.stepStateMachine(behaviour.machine, agent.state, senses, actions);
         if (state < 0 || state >= static_cast<int>(behaviour.machine.states.size())) {
             throw std::out_of_range("stepStateMachine() returned state " + std::to_string(state) + " of behaviour '" +
                                     behaviour.name + "', which has " +
@@ -451,7 +470,7 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
         }
         const MachineState& now = behaviour.machine.states[static_cast<std::size_t>(state)];
         speedScale = now.speedScale;
-        animation = &now.animation;
+        animation = now.animationIndex;
     } else {
         state = m_arbitrateLayers ? m_arbitrateLayers(behaviour.stack, senses) : m_code.arbitrateLayers(behaviour.stack, senses);
         if (state < -1 || state >= static_cast<int>(behaviour.stack.layers.size())) {
@@ -463,14 +482,14 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
             const Layer& layer = behaviour.stack.layers[static_cast<std::size_t>(state)];
             for (const Action& action : layer.actions) actions.push_back(&action);
             speedScale = layer.speedScale;
-            animation = &layer.animation;
+            animation = layer.animationIndex;
         }
     }
     if (state != agent.state) {
         agent.timeInState = 0.0f;
         agent.state = state;
-        if (*animation != agent.animation) {
-            agent.animation = *animation;
+        if (animation != agent.animation) {
+            agent.animation = animation;
             agent.animationTime = 0.0f;
         }
     }

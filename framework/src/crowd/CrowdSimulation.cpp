@@ -66,6 +66,8 @@ CrowdSimulation::CrowdSimulation(const CrowdWorld& world, GroundMaps maps)
     m_cellSize = cellsAlong > 1024.0f ? std::max(sight, std::max(size.x, size.y) / kMaxCells) : sight;
     m_cellsX = std::max(1, std::min(kMaxCells, static_cast<int>(std::ceil(size.x / m_cellSize))));
     m_cellsZ = std::max(1, std::min(kMaxCells, static_cast<int>(std::ceil(size.y / m_cellSize))));
+    m_lastCell[0] = m_lastCell[2] = static_cast<float>(m_cellsX - 1);
+    m_lastCell[1] = m_lastCell[3] = static_cast<float>(m_cellsZ - 1);
     measureReaches();
     moveOntoHugePages(m_maps.collision.walkable);
     moveOntoHugePages(m_maps.heights.values);
@@ -101,10 +103,17 @@ void CrowdSimulation::takeDirectCalls() {
     direct(m_code.walkableAt, m_walkableAt);
     direct(m_code.heightAt, m_heightAt);
     direct(m_code.arbitrateLayers, m_arbitrateLayers);
+    direct(m_code.stepStateMachine, m_stepStateMachine);
 }
 
 void CrowdSimulation::resolveNames() {
     // Names become indices once, so that a step compares no strings.
+    const auto animationIndex = [&](const std::string& name) {
+        const auto found = std::find(m_animations.begin(), m_animations.end(), name);
+        if (found != m_animations.end()) return static_cast<int>(found - m_animations.begin());
+        m_animations.push_back(name);
+        return static_cast<int>(m_animations.size() - 1);
+    };
     const auto resolveCondition = [&](Condition& condition) {
         if (condition.kind == Condition::Kind::Sees || condition.kind == Condition::Kind::Near)
             condition.index = m_world.findType(condition.type);
@@ -127,11 +136,13 @@ void CrowdSimulation::resolveNames() {
     };
     for (Behaviour& behaviour : m_world.behaviours) {
         for (MachineState& state : behaviour.machine.states) {
+            state.animationIndex = animationIndex(state.animation);
             for (Action& action : state.actions) resolveAction(action);
             for (Transition& transition : state.transitions)
                 for (Condition& condition : transition.when) resolveCondition(condition);
         }
         for (Layer& layer : behaviour.stack.layers) {
+            layer.animationIndex = animationIndex(layer.animation);
             for (Action& action : layer.actions) resolveAction(action);
             for (Condition& condition : layer.when) resolveCondition(condition);
         }
@@ -206,7 +217,7 @@ void CrowdSimulation::placeAgents() {
                 m_world.behaviours[static_cast<std::size_t>(m_world.types[static_cast<std::size_t>(agent.type)].behaviourIndex)];
             if (behaviour.kind == Behaviour::Kind::StateMachine) {
                 agent.state = behaviour.machine.initial;
-                agent.animation = behaviour.machine.states[static_cast<std::size_t>(agent.state)].animation;
+                agent.animation = behaviour.machine.states[static_cast<std::size_t>(agent.state)].animationIndex;
             } else {
                 agent.state = -1;
             }
@@ -324,10 +335,10 @@ void CrowdSimulation::stepTheDead() {
         const Behaviour& b = m_world.behaviours[static_cast<std::size_t>(m_world.types[static_cast<std::size_t>(agent.type)].behaviourIndex)];
         if (b.kind == Behaviour::Kind::StateMachine) {
             agent.state = b.machine.initial;
-            agent.animation = b.machine.states[static_cast<std::size_t>(agent.state)].animation;
+            agent.animation = b.machine.states[static_cast<std::size_t>(agent.state)].animationIndex;
         } else {
             agent.state = -1;
-            agent.animation = "stand";
+            agent.animation = 0;   // "stand"
         }
     }
 }

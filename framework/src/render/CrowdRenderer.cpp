@@ -220,7 +220,7 @@ void CrowdRenderer::uploadAgents(const CrowdSimulation& simulation, const CrowdD
         for (std::size_t i = 0; i < agents.size(); ++i) {
             const CrowdAgent& agent = agents[i];
             if (!agent.alive || agent.type != static_cast<int>(type)) continue;
-            const Md2Animation* animation = gpu.model.findAnimation(agent.animation);
+            const Md2Animation* animation = gpu.model.findAnimation(simulation.animationName(agent.animation));
             if (!animation) animation = &gpu.model.animations.front();
             const Md2FramePair frames = code.md2FramesAt(*animation, agent.animationTime, options.framesPerSecond);
             const int frameCount = static_cast<int>(gpu.model.frames.size());

@@ -43,7 +43,7 @@ struct CrowdAgent {
     int state = 0;                // the FSM state, or the layer that ran (-1: none)
     float timeInState = 0.0f;     // seconds
     float animationTime = 0.0f;   // seconds into the current animation
-    std::string animation = "stand";   // the MD2 animation its state or layer plays
+    int animation = 0;            // the MD2 animation its state or layer plays: CrowdSimulation::animationName(animation)
     bool carrying = false;
     bool alive = true;
     float deadFor = 0.0f;         // seconds since it was attacked (it comes back after respawnSeconds)
@@ -113,6 +113,9 @@ public:
 
     /// The index of a message name, or -1 (at most 32 names per world).
     int messageIndex(const std::string& name) const;
+
+    /// The name of animation `index` (CrowdAgent::animation); 0 is "stand".
+    const std::string& animationName(int index) const { return m_animations[static_cast<std::size_t>(index)]; }
 
 private:
     class Senses;
@@ -209,6 +212,7 @@ private:
     std::vector<glm::vec2> m_trails;      // trailLength per agent, a ring
     int m_trailCount = 0;                 // positions recorded per agent so far
     std::vector<std::string> m_messages;
+    std::vector<std::string> m_animations{"stand"};   // the names CrowdAgent::animation indexes
     long long m_step = 0;
     int m_delivered = 0;
     int m_attacks = 0;
@@ -223,6 +227,7 @@ private:
     // the step visits the living in this order.
     float m_cellSize = 4.0f;
     int m_cellsX = 1, m_cellsZ = 1;
+    float m_lastCell[4] = {};             // m_cellsX - 1, m_cellsZ - 1, twice: cellsAround()'s clamp
     std::vector<int> m_cellStart;         // m_cellsX * m_cellsZ + 1 offsets into m_cellAgents
     std::vector<GridEntry> m_cellAgents;
     std::vector<int> m_typeCellStart;     // the same per type: (type * cells + cell) + 1 offsets into m_typeCellAgents
@@ -252,6 +257,7 @@ private:
     bool (*m_walkableAt)(const CollisionMap&, glm::vec2) = nullptr;
     float (*m_heightAt)(const HeightField&, glm::vec2) = nullptr;
     int (*m_arbitrateLayers)(const SubsumptionStack&, const CrowdSenses&) = nullptr;
+    int (*m_stepStateMachine)(const StateMachine&, int, const CrowdSenses&, std::vector<const Action*>&) = nullptr;
 
     // The maps as the prefetch reads them: texel = (xz - min) * scale, clamped.
     struct GroundMap {

@@ -77,6 +77,7 @@ struct Transition {
 struct MachineState {
     std::string name;
     std::string animation;      // the MD2 animation played in this state ("run", "stand", ...)
+    int animationIndex = 0;     // its index among CrowdSimulation::animationName()'s (set by the simulation)
     float speedScale = 1.0f;    // times the agent type's speed
     std::vector<Action> actions;
     std::vector<Transition> transitions;   // tried in this order; the first that holds fires
@@ -93,6 +94,7 @@ struct StateMachine {
 struct Layer {
     std::string name;
     std::string animation;
+    int animationIndex = 0;     // as MachineState's
     float speedScale = 1.0f;
     std::vector<Condition> when;
     std::vector<Action> actions;
