@@ -85,7 +85,10 @@ function(_stoa_lab_folder_includes target lab)
     target_include_directories(${target} PRIVATE ${STOA_LABS_DIR}/${used}/student)
   endforeach()
   # NotImplemented records which lab a stub belongs to (stoa/core/NotImplemented.hpp).
-  target_compile_definitions(${target} PRIVATE STOA_STUDENT_LAB="${lab}")
+  # _GLIBCXX_ASSERTIONS: an index past the end of a std::vector or std::array in
+  # student code stops the program with the line and the index (libstdc++), which
+  # the grader reports as a crash, instead of reading whatever lies beyond.
+  target_compile_definitions(${target} PRIVATE STOA_STUDENT_LAB="${lab}" _GLIBCXX_ASSERTIONS)
 endfunction()
 
 # The student C++ of `lab` for one track, one OBJECT library per file, so that a

@@ -176,7 +176,33 @@ stoa::CheckResult checkLightBoxHoldsTheScene() {
                     "near = -zmax and far = -zmin, widened if at all, never narrowed (docs: The directional light: an orthographic box fitted to the scene)");
         }
     }
-    return stoa::CheckResult::pass("the sun's box holds every corner of the scene for four directions, straight down included");
+    // A spot light looks at its target whatever its direction: the target lands in
+    // the middle of its map, between its near and far planes. Straight down from a
+    // point off the world's axis too, where (0, 1, 0) cannot be the up vector.
+    struct Spot {
+        glm::vec3 position, target;
+    };
+    const Spot spots[] = {{{4.0f, 12.0f, -3.0f}, {4.0f, 0.0f, -3.0f}},
+                          {{-6.0f, 9.0f, 5.0f}, {-6.0f, 0.5f, 5.0f}},
+                          {{1.0f, 5.0f, 0.0f}, {-1.0f, 0.0f, 0.0f}},
+                          {{3.0f, 6.0f, 8.0f}, {-2.0f, 1.0f, 0.0f}}};
+    for (const Spot& spot : spots) {
+        const glm::mat4 matrix = stoa::spotLightMatrix(spot.position, spot.target, 50.0f, 0.5f, 40.0f);
+        const glm::vec4 clip = matrix * glm::vec4(spot.target, 1.0f);
+        const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+        const bool finite = std::isfinite(ndc.x) && std::isfinite(ndc.y) && std::isfinite(ndc.z);
+        if (!finite || std::abs(ndc.x) > 1e-3f || std::abs(ndc.y) > 1e-3f || std::abs(ndc.z) >= 1.0f)
+            return stoa::CheckResult::fail(
+                "spotLightMatrix() of a light at (" + number(spot.position.x) + ", " + number(spot.position.y) + ", " +
+                number(spot.position.z) + ") looking at (" + number(spot.target.x) + ", " + number(spot.target.y) +
+                ", " + number(spot.target.z) + ") puts its target at (" + number(ndc.x, 3) + ", " + number(ndc.y, 3) +
+                ", " + number(ndc.z, 3) + "); it belongs in the middle of the map, (0, 0), between near and far. "
+                "The up vector is chosen from the direction the light looks in, target - position: (0, 0, 1) when it "
+                "is nearly straight up or down (docs: The point light: a perspective frustum)");
+    }
+    return stoa::CheckResult::pass("the sun's box holds every corner of the scene for four directions, straight down "
+                                   "included, and a spot light's target lands in the middle of its map for four "
+                                   "directions, straight down included");
 }
 
 stoa::CheckResult checkCascadeHoldsItsSlice() {

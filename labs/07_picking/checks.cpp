@@ -62,11 +62,17 @@ stoa::CheckResult checkBvhCheapestSplit() {
     for (int i = 0; i < 30; ++i) lastPlane.push_back(11.4f + 0.2f * static_cast<float>(i) / 29.0f);
     lastPlane.front() = 0.0f;   // the centroids' box from x = 0
     lastPlane.back() = 12.0f;   // to x = 12: bins one metre wide
+    // Five triangles near x = 0, one at x = 4.4 and three near x = 12: the lone one
+    // joins the three, whose child then spans 7.7 m, since the other plane gives
+    // six triangles a child 4.5 m long (the right-hand count matters as much as the left).
+    std::vector<float> loneMiddle = {0.0f, 0.05f, 0.1f, 0.15f, 0.2f, 4.4f, 11.8f, 11.9f, 12.0f};
     const Layout layouts[] = {
         {"16 triangles within a metre and one 50 m away along x", outlier, "1 | 16",
          "the cheapest plane leaves the far triangle alone in a child of one"},
         {"11 triangles one a metre from x = 0 to 10.5 and 30 within x = 11.4 to 12", lastPlane, "11 | 30",
          "the cheapest of the bins - 1 planes is the last one, between the last two bins"},
+        {"five triangles near x = 0, one at x = 4.4 and three near x = 12", loneMiddle, "4 | 5",
+         "the one at x = 4.4 goes with the three: 5 in a small box and 4 over 7.7 m cost less than 6 over 4.5 m and 3 in a small box"},
     };
     for (const Layout& layout : layouts) {
         std::vector<stoa::Triangle> triangles;
@@ -80,8 +86,8 @@ stoa::CheckResult checkBvhCheapestSplit() {
                                            "axis, a child of one triangle included, and keep the cheapest "
                                            "(docs: Where to split)");
     }
-    return stoa::CheckResult::pass("buildBvh() splits the root at the cheapest plane: a far triangle alone, and the "
-                                   "last plane between the bins");
+    return stoa::CheckResult::pass("buildBvh() splits the root at the cheapest plane: a far triangle alone, the "
+                                   "last plane between the bins, and a lone triangle joining the group of three");
 }
 
 stoa::CheckResult checkSlabTestTable() {

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lab08 {
@@ -59,6 +60,63 @@ std::vector<stoa::LightSphere> lightsAround(const TileScene& scene, stoa::CheckR
         light.centerView = glm::normalize(glm::vec3(direction) / direction.w) * distance;
         light.reach = random.between(0.05f, 0.6f) * distance;
         if (light.centerView.z + light.reach < -scene.near) lights.push_back(light);
+    }
+    return lights;
+}
+
+// The view-space point at `depth` in front of the camera that lands on `pixel`.
+glm::vec3 pointOnPixel(const TileScene& scene, glm::vec2 pixel, float depth) {
+    const glm::vec2 ndc = pixel / glm::vec2(scene.grid.viewport) * 2.0f - 1.0f;
+    const glm::vec4 back = glm::inverse(scene.projection) * glm::vec4(ndc, 0.0f, 1.0f);
+    const glm::vec3 point = glm::vec3(back) / back.w;
+    return point * (depth / -point.z);
+}
+
+// Tiny lights whose leftmost (or lowest) point lands 0.3 pixels before a tile's
+// edge, in the last pixel of the tile before it: a range must start at that tile.
+std::vector<stoa::LightSphere> lightsAtTileEdges(const TileScene& scene, stoa::CheckRandom& random) {
+    std::vector<stoa::LightSphere> lights;
+    const glm::vec2 size(scene.grid.viewport);
+    for (int axis = 0; axis < 2; ++axis) {
+        for (int edge = scene.grid.tileSize; edge < scene.grid.viewport[axis]; edge += scene.grid.tileSize) {
+            glm::vec2 pixel;
+            pixel[axis] = static_cast<float>(edge) - 0.3f;
+            pixel[1 - axis] = random.between(10.0f, size[1 - axis] - 10.0f);
+            const float depth = random.between(4.0f, 30.0f);
+            stoa::LightSphere light;
+            light.reach = 0.001f * depth;
+            light.centerView = pointOnPixel(scene, pixel, depth);
+            light.centerView[axis] += light.reach;
+            lights.push_back(light);
+        }
+    }
+    return lights;
+}
+
+// Lights whose box (C + (+-R, +-R, +-R)) lies wholly beyond one side of the view,
+// a little past its edge: on no tile.
+std::vector<std::pair<stoa::LightSphere, const char*>> lightsOffThePicture(const TileScene& scene,
+                                                                         stoa::CheckRandom& random) {
+    std::vector<std::pair<stoa::LightSphere, const char*>> lights;
+    const glm::vec2 size(scene.grid.viewport);
+    const float tanY = std::tan(glm::radians(30.0f)), tanX = tanY * size.x / size.y;
+    const char* sides[] = {"right of", "above", "left of", "below"};
+    for (int i = 0; i < 40; ++i) {
+        const int side = i % 4, axis = side % 2;
+        const float sign = side < 2 ? 1.0f : -1.0f;
+        glm::vec2 ndc;
+        ndc[axis] = sign * random.between(1.05f, 1.9f);
+        ndc[1 - axis] = random.between(-1.2f, 1.2f);
+        const float depth = random.between(3.0f, 30.0f);
+        const glm::vec3 center = pointOnPixel(scene, (ndc * 0.5f + 0.5f) * size, depth);
+        // How far beyond the side's plane (through the eye) the centre lies, in
+        // the units a box's corner offsets (+-R on both axes) move it by.
+        const float slope = axis == 0 ? tanX : tanY;
+        const float beyond = (sign * center[axis] - depth * slope) / (1.0f + slope);
+        stoa::LightSphere light;
+        light.centerView = center;
+        light.reach = random.between(0.1f, 0.95f) * std::min(beyond, depth - scene.near);
+        lights.emplace_back(light, sides[side]);
     }
     return lights;
 }
@@ -118,13 +176,21 @@ stoa::CheckResult checkTileRangesHoldTheSphere() {
     const glm::ivec2 tiles = scene.grid.tiles();
     stoa::CheckRandom random(20261129u);
     int landed = 0;
-    for (const stoa::LightSphere& light : lightsAround(scene, random, 300)) {
+    std::vector<stoa::LightSphere> lights = lightsAround(scene, random, 300);
+    const int spread = static_cast<int>(lights.size());
+    for (const stoa::LightSphere& light : lightsAtTileEdges(scene, random)) lights.push_back(light);
+    for (int n = 0; n < static_cast<int>(lights.size()); ++n) {
+        const stoa::LightSphere& light = lights[static_cast<std::size_t>(n)];
         const stoa::TileRange range = stoa::lightTileRange(light, scene.projection, scene.near, scene.grid);
-        // Points on the sphere and inside it: every tile one lands in must be in the range.
-        for (int i = 0; i < 200; ++i) {
-            const glm::vec3 direction(random.between(-1.0f, 1.0f), random.between(-1.0f, 1.0f), random.between(-1.0f, 1.0f));
+        // Points on the sphere and inside it, its four points furthest left, right,
+        // down and up first: every tile one lands in must be in the range.
+        const glm::vec3 extremes[] = {{-1.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
+        for (int i = 0; i < (n < spread ? 204 : 4); ++i) {
+            const glm::vec3 direction = i < 4 ? extremes[i]
+                                              : glm::vec3(random.between(-1.0f, 1.0f), random.between(-1.0f, 1.0f),
+                                                          random.between(-1.0f, 1.0f));
             if (glm::length(direction) < 1e-3f) continue;
-            const float scale = i % 2 == 0 ? 0.999f : random.next();
+            const float scale = i < 4 || i % 2 == 0 ? 0.999f : random.next();
             const glm::vec3 point = light.centerView + glm::normalize(direction) * light.reach * scale;
             const glm::vec4 clip = scene.projection * glm::vec4(point, 1.0f);
             const glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(scene.grid.viewport);
@@ -142,8 +208,20 @@ stoa::CheckResult checkTileRangesHoldTheSphere() {
                     "sphere covers, at every edge of the picture (docs: Which tiles a light touches)");
         }
     }
+    for (const auto& [light, side] : lightsOffThePicture(scene, random)) {
+        const stoa::TileRange range = stoa::lightTileRange(light, scene.projection, scene.near, scene.grid);
+        if (!range.empty())
+            return stoa::CheckResult::fail(
+                "lightTileRange() of " + describe(light) + " is columns " + std::to_string(range.first.x) + " to " +
+                std::to_string(range.last.x) + ", rows " + std::to_string(range.first.y) + " to " +
+                std::to_string(range.last.y) + ", but the box around its sphere lies wholly " + side +
+                " the picture: its rectangle lies outside [-1, 1] on that axis, and the range is empty "
+                "(docs: Which tiles a light touches)");
+    }
     return stoa::CheckResult::pass("lightTileRange() holds the tile of every one of " + std::to_string(landed) +
-                                   " points of 300 spheres in and around the picture");
+                                   " points of " + std::to_string(lights.size()) +
+                                   " spheres in and around the picture (tiny ones at the tiles' edges), and is "
+                                   "empty for 40 lights wholly off it");
 }
 
 stoa::CheckResult checkTileListsMatchTheRanges() {

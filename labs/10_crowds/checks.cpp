@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lab10 {
@@ -203,7 +204,76 @@ stoa::CheckResult blendedNormalsUnitBody() {
     return stoa::CheckResult::pass("blendMd2Frames() keeps 200 vertices on the line between their frames with unit normals at t = 0, 0.25, 0.5 and 0.8");
 }
 
+// Senses in which exactly the listed kinds of condition hold.
+class FixedSenses : public stoa::CrowdSenses {
+public:
+    explicit FixedSenses(std::vector<stoa::Condition::Kind> holding) : m_holding(std::move(holding)) {}
+    bool holds(const stoa::Condition& condition) const override {
+        bool found = false;
+        for (const stoa::Condition::Kind kind : m_holding) found = found || kind == condition.kind;
+        return found != condition.negated;
+    }
+
+private:
+    std::vector<stoa::Condition::Kind> m_holding;
+};
+
+stoa::Layer layerWhen(const char* name, std::vector<stoa::Condition::Kind> kinds) {
+    stoa::Layer layer;
+    layer.name = name;
+    for (const stoa::Condition::Kind kind : kinds) {
+        stoa::Condition condition;
+        condition.kind = kind;
+        layer.when.push_back(condition);
+    }
+    return layer;
+}
+
+stoa::CheckResult layersFirstThatFiresBody() {
+    using Kind = stoa::Condition::Kind;
+    // A goat's stack with a default layer at the bottom, and a stack whose every
+    // layer has conditions: there nothing may fire, and the answer is -1.
+    stoa::SubsumptionStack herd;
+    herd.layers = {layerWhen("flee", {Kind::Sees}), layerWhen("drink", {Kind::Near, Kind::Carrying}),
+                   layerWhen("graze", {Kind::Chance}), layerWhen("amble", {})};
+    stoa::SubsumptionStack guard;
+    guard.layers = {layerWhen("attack", {Kind::Near, Kind::Sees}), layerWhen("return", {Kind::Carrying}),
+                    layerWhen("rest", {Kind::AtBase})};
+    struct Row {
+        const stoa::SubsumptionStack* stack;
+        const char* stackName;
+        std::vector<Kind> holding;
+        const char* sensesName;
+        int expected;
+    };
+    const Row rows[] = {
+        {&herd, "flee / drink (two conditions) / graze / amble (none)", {}, "nothing", 3},
+        {&herd, "flee / drink (two conditions) / graze / amble (none)", {Kind::Near}, "only the first of drink's two", 3},
+        {&herd, "flee / drink (two conditions) / graze / amble (none)", {Kind::Near, Kind::Carrying, Kind::Chance},
+         "drink's two and graze's", 1},
+        {&herd, "flee / drink (two conditions) / graze / amble (none)", {Kind::Sees, Kind::Chance}, "flee's and graze's", 0},
+        {&guard, "attack (two conditions) / return / rest", {}, "nothing", -1},
+        {&guard, "attack (two conditions) / return / rest", {Kind::Sees}, "only one of attack's two", -1},
+        {&guard, "attack (two conditions) / return / rest", {Kind::AtBase}, "rest's", 2},
+        {&guard, "attack (two conditions) / return / rest", {Kind::Near, Kind::Sees, Kind::AtBase}, "attack's two and rest's", 0},
+    };
+    for (const Row& row : rows) {
+        const FixedSenses senses(row.holding);
+        const int layer = stoa::arbitrateLayers(*row.stack, senses);
+        if (layer != row.expected)
+            return stoa::CheckResult::fail(
+                "arbitrateLayers() of the layers " + std::string(row.stackName) + ", when " + row.sensesName +
+                " holds, returned " + std::to_string(layer) + "; expected " + std::to_string(row.expected) +
+                ": the first layer from the top whose conditions all hold runs, a layer without conditions "
+                "always fires, and when none fires the answer is -1");
+    }
+    return stoa::CheckResult::pass("arbitrateLayers() picks the first layer whose conditions all hold, in 8 "
+                                   "situations, -1 when none fires");
+}
+
 } // namespace
+
+stoa::CheckResult checkLayersFirstThatFires() { return pointingToDocs(layersFirstThatFiresBody(), "Subsumption"); }
 
 stoa::CheckResult checkHeightsAtTexelCentres() {
     return pointingToDocs(heightsAtTexelCentresBody(), "Bilinear height");

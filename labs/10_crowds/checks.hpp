@@ -23,4 +23,9 @@ stoa::CheckResult checkWalkableAtTexels();
 /// first frame at t = 0, and positions on the straight line between the two.
 stoa::CheckResult checkBlendedNormalsUnit();
 
+/// layers_first_that_fires: arbitrateLayers() returns the first layer from the
+/// top whose conditions all hold, on stacks and senses of its own, -1 when no
+/// layer fires (a stack whose every layer has conditions: no graded world has one).
+stoa::CheckResult checkLayersFirstThatFires();
+
 } // namespace lab10

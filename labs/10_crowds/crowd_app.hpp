@@ -172,6 +172,7 @@ public:
         if (spec.check == "heights_at_texel_centres") return lab10::checkHeightsAtTexelCentres();
         if (spec.check == "walkable_at_texels") return lab10::checkWalkableAtTexels();
         if (spec.check == "blended_normals_unit") return lab10::checkBlendedNormalsUnit();
+        if (spec.check == "layers_first_that_fires") return lab10::checkLayersFirstThatFires();
         return Lab::runCheck(spec);
     }
 
