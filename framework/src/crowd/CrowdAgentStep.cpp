@@ -458,9 +458,10 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
     float speedScale = 1.0f;
     int animation = 0;   // "stand", where no layer fires
     int state = -1;
-    std::vector<const Action*>& actions = scratch.actions;
-    actions.clear();
+    std::vector<const Action*>& actions = scratch.actions;   // what stepStateMachine() chose ...
+    const std::vector<Action>* layerActions = nullptr;        // ... or the layer that fired
     if (behaviour.kind == Behaviour::Kind::StateMachine) {
+        actions.clear();
         state = m_stepStateMachine ? m_stepStateMachine(behaviour.machine, agent.state, senses, actions)
                                    : m_code.stepStateMachine(behaviour.machine, agent.state, senses, actions);
         if (state < 0 || state >= static_cast<int>(behaviour.machine.states.size())) {
@@ -480,7 +481,7 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
         }
         if (state >= 0) {
             const Layer& layer = behaviour.stack.layers[static_cast<std::size_t>(state)];
-            for (const Action& action : layer.actions) actions.push_back(&action);
+            layerActions = &layer.actions;
             speedScale = layer.speedScale;
             animation = layer.animationIndex;
         }
@@ -494,11 +495,18 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
         }
     }
     agent.speed = 0.0f;
-    for (const Action* action : actions) runAction(index, agent, *action, speedScale, scratch);
-    const glm::vec2 before = agent.position;
-    move(agent, scratch);
-    // The ground only changes under an agent that moved.
-    if (agent.position != before) agent.y = height(agent.position);
+    if (layerActions) {
+        for (const Action& action : *layerActions) runAction(index, agent, action, speedScale, scratch);
+    } else if (behaviour.kind == Behaviour::Kind::StateMachine) {
+        for (const Action* action : actions) runAction(index, agent, *action, speedScale, scratch);
+    }
+    // Only an agent with somewhere to go moves (most of a grazing herd stands),
+    // and the ground only changes under an agent that moved.
+    if (agent.speed * m_world.step > 0.0f) {
+        const glm::vec2 before = agent.position;
+        move(agent, scratch);
+        if (agent.position != before) agent.y = height(agent.position);
+    }
     agent.timeInState += dt;
     agent.animationTime += dt;
     // The direction of the heading it ends with, for its next step.
@@ -506,6 +514,7 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
         if (sameBits(scratch.memoHeadings[m], agent.heading)) {
             m_memos[index].heading = agent.heading;
             m_memos[index].direction = scratch.memoDirections[m];
+            break;   // any entry of the same bits holds the same direction
         }
     }
 }

@@ -281,9 +281,25 @@ void CrowdSimulation::rebuildAgentGrid() {
     // ... then counts to ends, the running sum in a register (not read back
     // from the array it was just stored to, a wait of several cycles per cell) ...
     const auto runningSum = [](std::vector<int>& starts) {
+        int* count = starts.data();
+        const std::size_t cellCount = starts.size() - 1;
+        std::size_t c = 0;
         int sum = 0;
-        for (std::size_t c = 0; c + 1 < starts.size(); ++c) starts[c] = sum += starts[c];
-        starts.back() = sum;
+#if defined(__SSE2__)
+        // Four cells at a time: each lane adds the lanes before it, then the sum so far.
+        __m128i before = _mm_setzero_si128();
+        for (; c + 4 <= cellCount; c += 4) {
+            __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(count + c));
+            x = _mm_add_epi32(x, _mm_slli_si128(x, 4));
+            x = _mm_add_epi32(x, _mm_slli_si128(x, 8));
+            x = _mm_add_epi32(x, before);
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(count + c), x);
+            before = _mm_shuffle_epi32(x, _MM_SHUFFLE(3, 3, 3, 3));
+        }
+        sum = _mm_cvtsi128_si32(before);
+#endif
+        for (; c < cellCount; ++c) count[c] = sum += count[c];
+        count[cellCount] = sum;
     };
     runningSum(m_cellStart);
     runningSum(m_typeCellStart);
