@@ -43,19 +43,18 @@ bool sameBits(float a, float b) {
 /// The conditions of CrowdWorld, answered for one agent at the current step.
 class CrowdSimulation::Senses final : public CrowdSenses {
 public:
-    Senses(const CrowdSimulation& crowd, std::size_t index, const CrowdAgent& agent, StepScratch& scratch)
-        : m_crowd(crowd), m_index(index), m_agent(agent), m_scratch(scratch) {}
+    Senses(const CrowdSimulation& crowd, std::size_t index, const CrowdAgent& agent, float sight, StepScratch& scratch)
+        : m_crowd(crowd), m_index(index), m_agent(agent), m_sight(sight), m_scratch(scratch) {}
 
     bool holds(const Condition& condition) const override { return test(condition) != condition.negated; }
 
 private:
     bool test(const Condition& condition) const {
         const CrowdAgent& agent = m_agent;
-        const AgentType& type = m_crowd.m_world.types[static_cast<std::size_t>(agent.type)];
         switch (condition.kind) {
         case Condition::Kind::Always: return true;
         case Condition::Kind::Sees:
-            return m_crowd.anyAgentOfType(m_index, agent.position, condition.index, type.sightRadius);
+            return m_crowd.anyAgentOfType(m_index, agent.position, condition.index, m_sight);
         case Condition::Kind::Near:
             return m_crowd.anyAgentOfType(m_index, agent.position, condition.index, condition.value);
         case Condition::Kind::Carrying: return agent.carrying;
@@ -65,9 +64,9 @@ private:
             return distanceSquared(agent.position, base.position) <= condition.value * condition.value;
         }
         case Condition::Kind::SeesSample:
-            return m_crowd.nearestPoint(m_crowd.m_samples, agent.position, type.sightRadius) >= 0;
+            return m_crowd.nearestPoint(m_crowd.m_samples, agent.position, m_sight) >= 0;
         case Condition::Kind::SmellsCrumb:
-            return m_crowd.nearestPoint(m_crowd.m_crumbs, agent.position, type.sightRadius) >= 0;
+            return m_crowd.nearestPoint(m_crowd.m_crumbs, agent.position, m_sight) >= 0;
         case Condition::Kind::Blocked:
             return !m_crowd.walkableAhead(m_index, agent.position + headingDirection(m_scratch, agent.heading) * condition.value);
         case Condition::Kind::TimeInState: return agent.timeInState >= condition.value;
@@ -82,6 +81,7 @@ private:
     const CrowdSimulation& m_crowd;
     std::size_t m_index;
     const CrowdAgent& m_agent;   // m_crowd's agent m_index, or its copy in the parallel pass
+    float m_sight;               // its type's sight radius
     StepScratch& m_scratch;
 };
 
@@ -454,7 +454,7 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
     scratch.memoNext = 1;
     scratch.memoHeadings[0] = m_memos[index].heading;
     scratch.memoDirections[0] = m_memos[index].direction;
-    const Senses senses(*this, index, agent, scratch);
+    const Senses senses(*this, index, agent, type.sightRadius, scratch);
     float speedScale = 1.0f;
     int animation = 0;   // "stand", where no layer fires
     int state = -1;
