@@ -15,42 +15,48 @@
 namespace lab06 {
 
 stoa::CheckResult checkSphereTurnedAboutX() {
-    // A column 3 times as tall as it is wide, turned 40 degrees about X and moved.
-    const glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(4.0f, 1.0f, -6.0f)) *
-                            glm::rotate(glm::mat4(1.0f), glm::radians(40.0f), glm::vec3(1.0f, 0.0f, 0.0f)) *
-                            glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 3.0f, 1.0f));
-    const stoa::BoundingSphere local{glm::vec3(0.0f, 0.5f, 0.0f), 1.0f};
-    const stoa::BoundingSphere world = stoa::worldBoundingSphere(local, model);
-    const std::string what = "worldBoundingSphere() of a sphere of radius 1 under a model that stretches Y by 3 and "
-                             "turns 40 degrees about X";
+    // A column 3 times as tall as it is wide, turned 40 degrees about X and moved;
+    // then the same stretched along X and along Z instead: any column may be the longest.
+    const char* const axisNames[3] = {"X", "Y", "Z"};
+    for (const int stretched : {1, 0, 2}) {
+        glm::vec3 stretch(1.0f);
+        stretch[stretched] = 3.0f;
+        const glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(4.0f, 1.0f, -6.0f)) *
+                                glm::rotate(glm::mat4(1.0f), glm::radians(40.0f), glm::vec3(1.0f, 0.0f, 0.0f)) *
+                                glm::scale(glm::mat4(1.0f), stretch);
+        const stoa::BoundingSphere local{glm::vec3(0.0f, 0.5f, 0.0f), 1.0f};
+        const stoa::BoundingSphere world = stoa::worldBoundingSphere(local, model);
+        const std::string what = "worldBoundingSphere() of a sphere of radius 1 under a model that stretches " +
+                                 std::string(axisNames[stretched]) + " by 3 and turns 40 degrees about X";
 
-    const glm::vec3 centre(model * glm::vec4(local.center, 1.0f));
-    if (glm::length(world.center - centre) > 1e-3f)
-        return stoa::CheckResult::fail(what + ": the centre is " + stoa::checkVector(world.center) + ", expected " +
-                                       stoa::checkVector(centre) + ", the object's centre carried by the whole model matrix "
-                                       "(docs: A sphere in world space)");
+        const glm::vec3 centre(model * glm::vec4(local.center, 1.0f));
+        if (glm::length(world.center - centre) > 1e-3f)
+            return stoa::CheckResult::fail(what + ": the centre is " + stoa::checkVector(world.center) + ", expected " +
+                                           stoa::checkVector(centre) + ", the object's centre carried by the whole model matrix "
+                                           "(docs: A sphere in world space)");
 
-    // The points of the object's sphere along its axes and diagonals: each must land inside.
-    for (int x = -1; x <= 1; ++x)
-        for (int y = -1; y <= 1; ++y)
-            for (int z = -1; z <= 1; ++z) {
-                if (x == 0 && y == 0 && z == 0) continue;
-                const glm::vec3 onSphere = local.center + local.radius * glm::normalize(glm::vec3(x, y, z));
-                const glm::vec3 landed(model * glm::vec4(onSphere, 1.0f));
-                const float distance = glm::length(landed - world.center);
-                if (distance > world.radius + 1e-3f)
-                    return stoa::CheckResult::fail(
-                        what + ": its radius is " + stoa::checkNumber(world.radius, 3) + ", but the point " + stoa::checkVector(onSphere) +
-                        " of the object's sphere lands " + stoa::checkNumber(distance, 3) +
-                        " from the centre, outside it. The radius grows by the longest column of the model's upper "
-                        "3 x 3, how far one step along an object axis goes (docs: A sphere in world space)");
-            }
-    if (world.radius > 3.0f * 1.001f)
-        return stoa::CheckResult::fail(what + ": its radius is " + stoa::checkNumber(world.radius, 3) +
-                                       ", larger than needed: the longest column is 3 long, so 3 holds the object "
-                                       "(docs: A sphere in world space)");
-    return stoa::CheckResult::pass("a sphere stretched along Y and turned about X still holds every point of the "
-                                   "object's sphere, and is no larger than the longest column says");
+        // The points of the object's sphere along its axes and diagonals: each must land inside.
+        for (int x = -1; x <= 1; ++x)
+            for (int y = -1; y <= 1; ++y)
+                for (int z = -1; z <= 1; ++z) {
+                    if (x == 0 && y == 0 && z == 0) continue;
+                    const glm::vec3 onSphere = local.center + local.radius * glm::normalize(glm::vec3(x, y, z));
+                    const glm::vec3 landed(model * glm::vec4(onSphere, 1.0f));
+                    const float distance = glm::length(landed - world.center);
+                    if (distance > world.radius + 1e-3f)
+                        return stoa::CheckResult::fail(
+                            what + ": its radius is " + stoa::checkNumber(world.radius, 3) + ", but the point " + stoa::checkVector(onSphere) +
+                            " of the object's sphere lands " + stoa::checkNumber(distance, 3) +
+                            " from the centre, outside it. The radius grows by the longest column of the model's upper "
+                            "3 x 3, how far one step along an object axis goes (docs: A sphere in world space)");
+                }
+        if (world.radius > 3.0f * 1.001f)
+            return stoa::CheckResult::fail(what + ": its radius is " + stoa::checkNumber(world.radius, 3) +
+                                           ", larger than needed: the longest column is 3 long, so 3 holds the object "
+                                           "(docs: A sphere in world space)");
+    }
+    return stoa::CheckResult::pass("a sphere stretched along Y (then X, then Z) and turned about X still holds every "
+                                   "point of the object's sphere, and is no larger than the longest column says");
 }
 
 namespace {
@@ -143,8 +149,21 @@ stoa::CheckResult checkLevelsOfDetail() {
                                                           : " (min(floor((1 - q) n), n - 1))") +
                                            " (docs: Level of detail)");
     }
+    // The eye inside the sphere, or on it: q = 1, even where the projected size,
+    // on a picture 8 pixels high, would say less.
+    const stoa::BoundingSphere sphere{glm::vec3(1.0f, 2.0f, -3.0f), 2.0f};
+    const glm::vec3 eyes[] = {{1.0f, 2.0f, -3.0f}, {1.5f, 2.5f, -3.5f}, {3.0f, 2.0f, -3.0f}};
+    for (const glm::vec3& eye : eyes) {
+        const float quality = stoa::lodQuality(sphere, eye, 60.0f, 8, stoa::LodSettings{});
+        if (quality != 1.0f)
+            return stoa::CheckResult::fail("lodQuality() of a sphere of radius 2 with the eye " +
+                                           stoa::checkNumber(glm::length(eye - sphere.center), 3) +
+                                           " from its centre, on a picture 8 pixels high, is " +
+                                           stoa::checkNumber(quality, 4) + ": the eye is inside the sphere or on "
+                                           "it (d <= r), so q = 1 (docs: Level of detail)");
+    }
     return stoa::CheckResult::pass("levelOfDetail() gives the page's levels for 16 qualities and level counts, "
-                                   "-1 for q <= 0");
+                                   "-1 for q <= 0; lodQuality() is 1 with the eye inside the sphere or on it");
 }
 
 stoa::CheckResult checkInsideAtTheBoundary() {

@@ -54,6 +54,12 @@ CheckResult pickWithinACircleBody() {
                                      " (the circle dx^2 + dy^2 <= R^2 holds rows as far as columns, its edge included)");
     }
     stencil = background(21, 15);
+    put(stencil, 14, 8, 5);   // 4 right, 1 down: sqrt(17) pixels away, just outside the circle of radius 4
+    if (int got = stoa::objectAtPixel(stencil, {10, 7}, 4); got != -1)
+        return CheckResult::fail("value 5 at " + pixel(14, 8) + ", sqrt(17) = 4.12 pixels from the click at " +
+                                 pixel(10, 7) + ", radius 4: expected nothing (dx^2 + dy^2 = 17 > R^2 = 16), got " +
+                                 std::to_string(got));
+    stencil = background(21, 15);
     put(stencil, 13, 4, 5);   // 3 right, 3 up: 4.24 pixels away, inside the square of side 2 x 4, outside the circle
     if (int got = stoa::objectAtPixel(stencil, {10, 7}, 4); got != -1)
         return CheckResult::fail("value 5 at " + pixel(13, 4) + ", 4.24 pixels from the click at " + pixel(10, 7) +
@@ -83,6 +89,32 @@ CheckResult pickWithinACircleBody() {
                                      std::to_string(i + 1) + ", got " + std::to_string(got) +
                                      "; the first and last rows and columns are inside the read-back "
                                      "(docs: From the mouse to a stencil value)");
+    // An object only along one edge of the picture, a click three pixels inside it:
+    // the search reaches the edge's own row or column.
+    struct Edge {
+        const char* name;
+        glm::ivec2 first, step, click;
+    };
+    const Edge edges[] = {{"left column", {0, 0}, {0, 1}, {3, 7}},
+                          {"right column", {20, 0}, {0, 1}, {17, 7}},
+                          {"top row", {0, 0}, {1, 0}, {10, 3}},
+                          {"bottom row", {0, 14}, {1, 0}, {10, 11}}};
+    for (const Edge& edge : edges) {
+        stencil = background(21, 15);
+        for (glm::ivec2 at = edge.first; at.x < 21 && at.y < 15; at += edge.step) put(stencil, at.x, at.y, 4);
+        if (int got = stoa::objectAtPixel(stencil, edge.click, 3); got != 3)
+            return CheckResult::fail("value 4 only along the picture's " + std::string(edge.name) + ", a click at " +
+                                     pixel(edge.click.x, edge.click.y) + " 3 pixels from it, radius 3: expected "
+                                     "object 3, got " + std::to_string(got) + "; the search runs from 0 to width - 1 "
+                                     "and height - 1, the edges included (docs: From the mouse to a stencil value)");
+    }
+    // Just past the right edge, the next row's first pixel follows in memory.
+    stencil = background(21, 15);
+    for (int y = 0; y < 15; ++y) put(stencil, 0, y, 6);
+    if (int got = stoa::objectAtPixel(stencil, {21, 7}, 0); got != -1)
+        return CheckResult::fail("a mouse at " + pixel(21, 7) + ", one past the right edge of a read-back 21 wide, "
+                                 "with objects along the left column, picked object " + std::to_string(got) +
+                                 ": x = width is outside (docs: From the mouse to a stencil value)");
     // A row's neighbours in memory are the ends of the rows around it: a search
     // that runs past the left or right edge reads the other side of the picture.
     for (const int side : {0, 1}) {
@@ -108,8 +140,8 @@ CheckResult pickWithinACircleBody() {
                                      "; keep the search's rows within 0 to height - 1, or it reads past the "
                                      "read-back (docs: From the mouse to a stencil value)");
     return CheckResult::pass("the radius is a circle including its edge, ties go to the read-back's order, "
-                             "the background and outside pick nothing, the corners pick what is there, and "
-                             "the search stays within its row at the edges");
+                             "the background and outside pick nothing, the corners and edges pick what is there, "
+                             "and the search stays within its row at the edges");
 }
 
 CheckResult mergeRulesBody() {
@@ -156,7 +188,13 @@ CheckResult mergeRulesBody() {
         return CheckResult::fail("after redo() of the merged drag, undo() must take it back again (the box to 0, " +
                                  std::to_string(history.undoCount()) + " edits to undo, the box at " +
                                  std::to_string(x()) + "): redo moves the command back onto the done list");
-    history.redo(scene);
+    // The rest redo in order, each once, and then there is nothing left to redo.
+    for (int i = 0; i < 8 && history.redo(scene); ++i) {}
+    if (history.undoCount() != 5 || x() != 7.0f || history.redo(scene))
+        return CheckResult::fail("after undoing all five edits and redoing them all, expected 5 edits done and the "
+                                 "box at 7, got " + std::to_string(history.undoCount()) + " and " +
+                                 std::to_string(x()) + ": each redo() takes the edit it applies off the undone list "
+                                 "(docs: One drag, one undo)");
 
     // Undo in the middle of a drag: the drag goes on after it, and its next moves
     // are a new edit, not part of the edit before the undone one (which has the same key).
@@ -177,7 +215,8 @@ CheckResult mergeRulesBody() {
         return CheckResult::fail("undoing the move to 13 made after an undo in the middle of a drag must bring the box "
                                  "back to 10, it is at " + std::to_string(x()) + " (docs: One drag, one undo)");
     return CheckResult::pass("merges only while open with equal keys; endMerge, a keyless command and undo close it; "
-                             "a merged edit undoes to before its first command and redoes to after its last");
+                             "a merged edit undoes to before its first command and redoes to after its last; "
+                             "every undone edit redoes once, in order");
 }
 
 CheckResult reloadBoundariesBody() {
