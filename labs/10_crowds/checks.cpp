@@ -24,6 +24,12 @@ std::string describe(glm::vec2 p) {
     return text;
 }
 
+std::string describe3(const glm::vec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.3f, %.3f, %.3f)", v.x, v.y, v.z);
+    return text;
+}
+
 // A failed check says which section of the lab page states the rule.
 stoa::CheckResult pointingToDocs(stoa::CheckResult result, const std::string& section) {
     if (!result.holds && result.message.find("(docs:") == std::string::npos)
@@ -201,7 +207,19 @@ stoa::CheckResult blendedNormalsUnitBody() {
             }
         }
     }
-    return stoa::CheckResult::pass("blendMd2Frames() keeps 200 vertices on the line between their frames with unit normals at t = 0, 0.25, 0.5 and 0.8");
+    // Exactly opposite normals halfway: the blend is 0, with no direction, and the
+    // first frame's normal stays.
+    stoa::Md2Frame up, down;
+    up.positions = down.positions = {glm::vec3(0.0f, 1.0f, 0.0f)};
+    up.normals = {glm::vec3(0.0f, 0.6f, 0.8f)};
+    down.normals = {-up.normals[0]};
+    stoa::blendMd2Frames(up, down, 0.5f, positions, normals);
+    if (normals.size() != 1 || !(glm::length(normals[0] - up.normals[0]) <= 1e-4f))
+        return stoa::CheckResult::fail("blendMd2Frames() at t = 0.5 between the normals (0, 0.6, 0.8) and (0, -0.6, -0.8), "
+                                       "whose blend is 0, gave " +
+                                       (normals.empty() ? std::string("no normal") : describe3(normals[0])) +
+                                       "; keep the first frame's normal where the blend has no length");
+    return stoa::CheckResult::pass("blendMd2Frames() keeps 200 vertices on the line between their frames with unit normals at t = 0, 0.25, 0.5 and 0.8, and the first frame's normal where opposite normals cancel");
 }
 
 // Senses in which exactly the listed kinds of condition hold.

@@ -89,22 +89,22 @@ CheckResult pickWithinACircleBody() {
                                      std::to_string(i + 1) + ", got " + std::to_string(got) +
                                      "; the first and last rows and columns are inside the read-back "
                                      "(docs: From the mouse to a stencil value)");
-    // An object only along one edge of the picture, a click three pixels inside it:
-    // the search reaches the edge's own row or column.
+    // An object only along one edge of the picture, a click two pixels inside it,
+    // radius 3: the search reaches the edge's own row or column, and no further.
     struct Edge {
         const char* name;
         glm::ivec2 first, step, click;
     };
-    const Edge edges[] = {{"left column", {0, 0}, {0, 1}, {3, 7}},
-                          {"right column", {20, 0}, {0, 1}, {17, 7}},
-                          {"top row", {0, 0}, {1, 0}, {10, 3}},
-                          {"bottom row", {0, 14}, {1, 0}, {10, 11}}};
+    const Edge edges[] = {{"left column", {0, 0}, {0, 1}, {2, 7}},
+                          {"right column", {20, 0}, {0, 1}, {18, 7}},
+                          {"top row", {0, 0}, {1, 0}, {10, 2}},
+                          {"bottom row", {0, 14}, {1, 0}, {10, 12}}};
     for (const Edge& edge : edges) {
         stencil = background(21, 15);
         for (glm::ivec2 at = edge.first; at.x < 21 && at.y < 15; at += edge.step) put(stencil, at.x, at.y, 4);
         if (int got = stoa::objectAtPixel(stencil, edge.click, 3); got != 3)
             return CheckResult::fail("value 4 only along the picture's " + std::string(edge.name) + ", a click at " +
-                                     pixel(edge.click.x, edge.click.y) + " 3 pixels from it, radius 3: expected "
+                                     pixel(edge.click.x, edge.click.y) + " 2 pixels from it, radius 3: expected "
                                      "object 3, got " + std::to_string(got) + "; the search runs from 0 to width - 1 "
                                      "and height - 1, the edges included (docs: From the mouse to a stencil value)");
     }
