@@ -316,7 +316,6 @@ void CrowdSimulation::rebuildAgentGrid() {
         const auto fill = [&](GridEntry& entry) {
             entry.position = agent.position;
             entry.heading = agent.heading;
-            entry.type = agent.type;
             entry.agent = static_cast<int>(i);
         };
         m_places[i] = --m_cellStart[cell];

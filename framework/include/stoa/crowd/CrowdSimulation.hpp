@@ -123,11 +123,11 @@ private:
     struct Outcome;
     struct StepScratch;
 
-    /// An agent in the grid, where it stood when the step began.
+    /// An agent in the grid, where it stood when the step began (16 bytes:
+    /// four to a cache line).
     struct GridEntry {
         glm::vec2 position;
         float heading;
-        int type;
         int agent;
     };
 
@@ -244,7 +244,7 @@ private:
     // about with the answer (-1: none yet). walkableAt() answers for a point
     // of a map that never changes, so the same bits get the same answer: an
     // agent that stood still with its heading kept does not ask again.
-    struct AgentMemo {
+    struct alignas(32) AgentMemo {   // 32 bytes, aligned: never across two cache lines
         float heading;
         glm::vec2 direction;
         glm::vec2 aheadPoint;
