@@ -325,8 +325,23 @@ void CrowdSimulation::runSharedListAction(CrowdAgent& agent, const Action& actio
     }
 }
 
-void CrowdSimulation::runAction(std::size_t index, CrowdAgent& agent, const Action& action, float speedScale,
-                                StepScratch& scratch) {
+inline void CrowdSimulation::runAction(std::size_t index, CrowdAgent& agent, const Action& action, float speedScale,
+                                       StepScratch& scratch) {
+    // Neither reads nor changes the others: no test of a kill before them in the parallel pass.
+    if (action.kind == Action::Kind::Stop) {
+        agent.speed = 0.0f;
+    } else if (action.kind == Action::Kind::Wander) {
+        const float turn = glm::radians(action.value) * m_world.step;
+        const float random = randomOf(scratch, index, static_cast<std::uint32_t>(action.line) * 2u);
+        agent.heading = wrapAngle(agent.heading + (2.0f * random - 1.0f) * turn);
+        agent.speed = m_world.types[static_cast<std::size_t>(agent.type)].speed * speedScale;
+    } else {
+        runOtherAction(index, agent, action, speedScale, scratch);
+    }
+}
+
+void CrowdSimulation::runOtherAction(std::size_t index, CrowdAgent& agent, const Action& action, float speedScale,
+                                     StepScratch& scratch) {
     if (scratch.outcome && scratch.outcome->victim >= 0 && readsOthers(action.kind)) {
         // After a kill the others are not as the parallel pass sees them: step it in its turn.
         scratch.outcome->redo = true;
@@ -334,14 +349,7 @@ void CrowdSimulation::runAction(std::size_t index, CrowdAgent& agent, const Acti
     }
     const AgentType& type = m_world.types[static_cast<std::size_t>(agent.type)];
     const float pickReach = type.radius + reach;
-    const std::uint32_t salt = static_cast<std::uint32_t>(action.line) * 2u;
     switch (action.kind) {
-    case Action::Kind::Wander: {
-        const float turn = glm::radians(action.value) * m_world.step;
-        agent.heading = wrapAngle(agent.heading + (2.0f * randomOf(scratch, index, salt) - 1.0f) * turn);
-        agent.speed = type.speed * speedScale;
-        break;
-    }
     case Action::Kind::Seek: {
         glm::vec2 target{0.0f};
         if (seekTarget(index, agent, action, scratch, target)) headTowards(agent, target);
@@ -362,7 +370,8 @@ void CrowdSimulation::runAction(std::size_t index, CrowdAgent& agent, const Acti
     case Action::Kind::Drop:
     case Action::Kind::DropCrumb:
     case Action::Kind::PickUpCrumb: runSharedListAction(agent, action); break;
-    case Action::Kind::Stop: agent.speed = 0.0f; break;
+    case Action::Kind::Stop:
+    case Action::Kind::Wander: break;   // runAction()'s
     case Action::Kind::Send: {
         // Every living agent within the radius, found through the grid, hears it next step.
         const std::uint32_t bit = 1u << action.index;

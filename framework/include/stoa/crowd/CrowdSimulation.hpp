@@ -151,6 +151,9 @@ private:
     void stepAgent(std::size_t index, CrowdAgent& agent, StepScratch& scratch);
     void runAction(std::size_t index, CrowdAgent& agent, const Action& action, float speedScale,
                    StepScratch& scratch);
+    /// Every action but <stop> and <wander>, which runAction() does itself (most agents' every step).
+    void runOtherAction(std::size_t index, CrowdAgent& agent, const Action& action, float speedScale,
+                        StepScratch& scratch);
     void move(CrowdAgent& agent, StepScratch& scratch);
     /// Where a <seek> heads the agent (false: nothing of the kind in sight).
     bool seekTarget(std::size_t index, const CrowdAgent& agent, const Action& action, StepScratch& scratch,
