@@ -118,7 +118,28 @@ stoa::CheckResult checkDegenerateTriangles() {
                                            ": a degenerate triangle adds nothing, and a vertex that gets nothing is +Y "
                                            "(docs: Smooth normals)");
     }
-    return stoa::CheckResult::pass("degenerate triangles add nothing, and what gets nothing is +Y, in both functions");
+    // A sliver, not degenerate (area 6e-6): in floats its corners' cosines come out
+    // as 1.00000012 and -1.00000012, past [-1, 1], where acos is NaN.
+    stoa::Mesh sliver;
+    for (const glm::vec3& p : {glm::vec3(-0.740419149f, -0.198111236f, -0.686641812f),
+                               glm::vec3(-0.563486218f, 0.997848988f, -0.782382369f),
+                               glm::vec3(-0.65057981f, 0.409178942f, -0.735255003f)}) {
+        stoa::Vertex vertex;
+        vertex.position = p;
+        sliver.vertices.push_back(vertex);
+    }
+    sliver.indices = {0, 1, 2};
+    stoa::smoothNormals(sliver);
+    for (std::size_t i = 0; i < sliver.vertices.size(); ++i) {
+        const glm::vec3 n = sliver.vertices[i].normal;
+        if (!(std::fabs(glm::length(n) - 1.0f) < 1e-3f))
+            return stoa::CheckResult::fail("smoothNormals(): vertex " + std::to_string(i) + " of a sliver triangle, whose "
+                                           "corners' cosines round to just past 1 and -1 in floats, got the normal " +
+                                           stoa::checkVector(n) + "; clamp the cosine to [-1, 1] before acos, which "
+                                           "is NaN past it (docs: Smooth normals)");
+    }
+    return stoa::CheckResult::pass("degenerate triangles add nothing, and what gets nothing is +Y, in both functions; "
+                                   "a sliver's cosines past [-1, 1] are clamped");
 }
 
 } // namespace lab03
