@@ -118,26 +118,29 @@ stoa::CheckResult checkDegenerateTriangles() {
                                            ": a degenerate triangle adds nothing, and a vertex that gets nothing is +Y "
                                            "(docs: Smooth normals)");
     }
-    // A sliver, not degenerate (area 6e-6): in floats its corners' cosines come out
-    // as 1.00000012 and -1.00000012, past [-1, 1], where acos is NaN.
+    // A sliver, not degenerate (area 6e-6): in floats the cosine at its corner 1
+    // comes out as 1.00000012 and at corner 2 as -1.00000012, past [-1, 1], where
+    // acos is NaN. Corner 1 also has a right-angled triangle of normal +Z.
     stoa::Mesh sliver;
-    for (const glm::vec3& p : {glm::vec3(-0.740419149f, -0.198111236f, -0.686641812f),
-                               glm::vec3(-0.563486218f, 0.997848988f, -0.782382369f),
-                               glm::vec3(-0.65057981f, 0.409178942f, -0.735255003f)}) {
+    const glm::vec3 a(-0.740419149f, -0.198111236f, -0.686641812f), b(-0.563486218f, 0.997848988f, -0.782382369f),
+        c(-0.65057981f, 0.409178942f, -0.735255003f);
+    for (const glm::vec3& p : {a, b, c, b + glm::vec3(1.0f, 0.0f, 0.0f), b + glm::vec3(0.0f, 1.0f, 0.0f)}) {
         stoa::Vertex vertex;
         vertex.position = p;
         sliver.vertices.push_back(vertex);
     }
-    sliver.indices = {0, 1, 2};
+    sliver.indices = {0, 1, 2, 1, 3, 4};
     stoa::smoothNormals(sliver);
-    for (std::size_t i = 0; i < sliver.vertices.size(); ++i) {
-        const glm::vec3 n = sliver.vertices[i].normal;
-        if (!(std::fabs(glm::length(n) - 1.0f) < 1e-3f))
-            return stoa::CheckResult::fail("smoothNormals(): vertex " + std::to_string(i) + " of a sliver triangle, whose "
-                                           "corners' cosines round to just past 1 and -1 in floats, got the normal " +
-                                           stoa::checkVector(n) + "; clamp the cosine to [-1, 1] before acos, which "
-                                           "is NaN past it (docs: Smooth normals)");
-    }
+    const glm::vec3 atB = sliver.vertices[1].normal, atC = sliver.vertices[2].normal;
+    const bool unitAtC = std::fabs(glm::length(atC) - 1.0f) < 1e-3f;
+    if (!(glm::length(atB - glm::vec3(0.0f, 0.0f, 1.0f)) < 1e-3f) || !unitAtC ||
+        !(std::fabs(glm::dot(atC, b - a)) < 1e-3f && std::fabs(glm::dot(atC, c - a)) < 1e-3f))
+        return stoa::CheckResult::fail("smoothNormals() of a sliver triangle, whose corners' cosines round to just past "
+                                       "1 and -1 in floats, gave its nearly 0-degree corner, shared with a right "
+                                       "angle of normal +Z, the normal " + stoa::checkVector(atB) +
+                                       " (expected +Z), and its nearly 180-degree corner, in no other triangle, " +
+                                       stoa::checkVector(atC) + " (expected the sliver's own normal). Clamp the "
+                                       "cosine to [-1, 1] before acos, which is NaN past it (docs: Smooth normals)");
     return stoa::CheckResult::pass("degenerate triangles add nothing, and what gets nothing is +Y, in both functions; "
                                    "a sliver's cosines past [-1, 1] are clamped");
 }
