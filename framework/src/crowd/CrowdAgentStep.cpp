@@ -106,7 +106,9 @@ void CrowdSimulation::forEachNear(glm::vec2 from, float radius, Visit&& visit) c
 
 CrowdSimulation::CellBlock CrowdSimulation::cellsAround(glm::vec2 from, int type, float radius) const {
     const glm::vec2 origin = m_maps.collision.grid.footprintMin;
-    const std::size_t base = static_cast<std::size_t>(type) * static_cast<std::size_t>(m_cellsX) * m_cellsZ;
+    const std::size_t base = static_cast<std::size_t>(type) * static_cast<std::size_t>(m_typeCellsX) * m_typeCellsZ;
+    // The block of the step's cells, then the type cells that hold them.
+    constexpr int s = kTypeCellShift;
 #if defined(__SSE2__)
     // The block's four edges side by side, each lane the same operations in
     // the same order as below (x + -r is x - r exactly; max then min is the
@@ -116,12 +118,12 @@ CrowdSimulation::CellBlock CrowdSimulation::cellsAround(glm::vec2 from, int type
     cells = _mm_min_ps(_mm_max_ps(cells, _mm_setzero_ps()), _mm_loadu_ps(m_lastCell));
     alignas(16) int index[4];
     _mm_store_si128(reinterpret_cast<__m128i*>(index), _mm_cvttps_epi32(cells));
-    return {base, index[0], index[2], index[1], index[3]};
+    return {base, index[0] >> s, index[2] >> s, index[1] >> s, index[3] >> s};
 #else
     const glm::vec2 low = (from - radius - origin) / m_cellSize;
     const glm::vec2 high = (from + radius - origin) / m_cellSize;
-    return {base, cellIndex(low.x, m_cellsX), cellIndex(high.x, m_cellsX), cellIndex(low.y, m_cellsZ),
-            cellIndex(high.y, m_cellsZ)};
+    return {base, cellIndex(low.x, m_cellsX) >> s, cellIndex(high.x, m_cellsX) >> s, cellIndex(low.y, m_cellsZ) >> s,
+            cellIndex(high.y, m_cellsZ) >> s};
 #endif
 }
 
@@ -131,7 +133,7 @@ int CrowdSimulation::nearestAgentOfType(std::size_t index, glm::vec2 from, int t
     float bestDistance = radius * radius;
     const CellBlock cells = cellsAround(from, type, radius);
     for (int cz = cells.z0; cz <= cells.z1; ++cz) {
-        const std::size_t row = cells.base + static_cast<std::size_t>(cz) * m_cellsX;
+        const std::size_t row = cells.base + static_cast<std::size_t>(cz) * m_typeCellsX;
         // The cells of one row of the type's grid lie side by side: one run of entries.
         const int end = m_typeCellStart[row + static_cast<std::size_t>(cells.x1) + 1];
         for (int k = m_typeCellStart[row + static_cast<std::size_t>(cells.x0)]; k < end; ++k) {
@@ -153,7 +155,7 @@ bool CrowdSimulation::anyAgentOfType(std::size_t index, glm::vec2 from, int type
     const float r2 = radius * radius;
     const CellBlock cells = cellsAround(from, type, radius);
     for (int cz = cells.z0; cz <= cells.z1; ++cz) {
-        const std::size_t row = cells.base + static_cast<std::size_t>(cz) * m_cellsX;
+        const std::size_t row = cells.base + static_cast<std::size_t>(cz) * m_typeCellsX;
         const int end = m_typeCellStart[row + static_cast<std::size_t>(cells.x1) + 1];
         for (int k = m_typeCellStart[row + static_cast<std::size_t>(cells.x0)]; k < end; ++k) {
             const GridEntry& entry = m_typeCellAgents[static_cast<std::size_t>(k)];

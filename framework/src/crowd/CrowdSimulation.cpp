@@ -66,6 +66,8 @@ CrowdSimulation::CrowdSimulation(const CrowdWorld& world, GroundMaps maps)
     m_cellSize = cellsAlong > 1024.0f ? std::max(sight, std::max(size.x, size.y) / kMaxCells) : sight;
     m_cellsX = std::max(1, std::min(kMaxCells, static_cast<int>(std::ceil(size.x / m_cellSize))));
     m_cellsZ = std::max(1, std::min(kMaxCells, static_cast<int>(std::ceil(size.y / m_cellSize))));
+    m_typeCellsX = ((m_cellsX - 1) >> kTypeCellShift) + 1;
+    m_typeCellsZ = ((m_cellsZ - 1) >> kTypeCellShift) + 1;
     m_lastCell[0] = m_lastCell[2] = static_cast<float>(m_cellsX - 1);
     m_lastCell[1] = m_lastCell[3] = static_cast<float>(m_cellsZ - 1);
     measureReaches();
@@ -261,10 +263,12 @@ void CrowdSimulation::measureReaches() {
 void CrowdSimulation::rebuildAgentGrid() {
     const glm::vec2 origin = m_maps.collision.grid.footprintMin;
     const std::size_t cells = static_cast<std::size_t>(m_cellsX) * m_cellsZ;
+    const std::size_t typeCells = static_cast<std::size_t>(m_typeCellsX) * m_typeCellsZ;
     const std::size_t types = std::max<std::size_t>(1, m_world.types.size());
     m_cellStart.assign(cells + 1, 0);
-    m_typeCellStart.assign(types * cells + 1, 0);
+    m_typeCellStart.assign(types * typeCells + 1, 0);
     m_cellOf.resize(m_agents.size());
+    m_typeCellOf.resize(m_agents.size());
     m_places.assign(m_agents.size(), -1);
     m_living.resize(m_agents.size());
     // A counting sort: each cell's count at its own index first ...
@@ -275,8 +279,10 @@ void CrowdSimulation::rebuildAgentGrid() {
         const glm::vec2 p = (m_agents[i].position - origin) / m_cellSize;
         const int cx = cellIndex(p.x, m_cellsX), cz = cellIndex(p.y, m_cellsZ);
         m_cellOf[i] = cz * m_cellsX + cx;
+        m_typeCellOf[i] = m_agents[i].type * static_cast<int>(typeCells) + (cz >> kTypeCellShift) * m_typeCellsX +
+                          (cx >> kTypeCellShift);
         ++m_cellStart[static_cast<std::size_t>(m_cellOf[i])];
-        ++m_typeCellStart[static_cast<std::size_t>(m_agents[i].type) * cells + static_cast<std::size_t>(m_cellOf[i])];
+        ++m_typeCellStart[static_cast<std::size_t>(m_typeCellOf[i])];
     }
     // ... then counts to ends, the running sum in a register (not read back
     // from the array it was just stored to, a wait of several cycles per cell) ...
@@ -320,7 +326,7 @@ void CrowdSimulation::rebuildAgentGrid() {
         };
         m_places[i] = --m_cellStart[cell];
         fill(m_cellAgents[static_cast<std::size_t>(m_places[i])]);
-        fill(m_typeCellAgents[static_cast<std::size_t>(--m_typeCellStart[static_cast<std::size_t>(agent.type) * cells + cell])]);
+        fill(m_typeCellAgents[static_cast<std::size_t>(--m_typeCellStart[static_cast<std::size_t>(m_typeCellOf[i])])]);
     }
 }
 

@@ -186,7 +186,7 @@ private:
     int nearestAgentOfType(std::size_t index, glm::vec2 from, int type, float radius) const;
     /// Whether there is one (the same as nearestAgentOfType() >= 0, stopping at the first).
     bool anyAgentOfType(std::size_t index, glm::vec2 from, int type, float radius) const;
-    /// The cells of type `type`'s grid that a circle around `from` touches: rows
+    /// The type cells of type `type` that hold the cells a circle around `from` touches: rows
     /// z0..z1, columns x0..x1, the grid starting at entry `base` of the cell starts.
     struct CellBlock {
         std::size_t base;
@@ -233,9 +233,16 @@ private:
     float m_lastCell[4] = {};             // m_cellsX - 1, m_cellsZ - 1, twice: cellsAround()'s clamp
     std::vector<int> m_cellStart;         // m_cellsX * m_cellsZ + 1 offsets into m_cellAgents
     std::vector<GridEntry> m_cellAgents;
-    std::vector<int> m_typeCellStart;     // the same per type: (type * cells + cell) + 1 offsets into m_typeCellAgents
+    // The same per type, for the senses, in cells of 2 x 2 of the step's
+    // (kTypeCellShift): an agent in cell (cx, cz) is in type cell (cx >> 1, cz >> 1),
+    // so a block of cells is a block of type cells, and a query's answer does
+    // not depend on the order of the entries (ties go to the lower index).
+    static constexpr int kTypeCellShift = 1;
+    int m_typeCellsX = 1, m_typeCellsZ = 1;
+    std::vector<int> m_typeCellStart;     // (type * type cells + type cell) + 1 offsets into m_typeCellAgents
     std::vector<GridEntry> m_typeCellAgents;
-    std::vector<int> m_cellOf;            // per agent, scratch of rebuildAgentGrid()
+    std::vector<int> m_cellOf;            // per agent, scratch of rebuildAgentGrid() ...
+    std::vector<int> m_typeCellOf;        // ... as is its type cell
     std::vector<int> m_places;                 // per agent, its place in the step's order (m_cellAgents), -1: none
     std::size_t m_place = 0;                   // the place of the agent whose turn it is
     bool m_committing = false;                 // in the parallel step's second pass: the agents after m_place are stepped already
