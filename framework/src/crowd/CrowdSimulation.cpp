@@ -55,6 +55,16 @@ CrowdSimulation::CrowdSimulation(const CrowdWorld& world, GroundMaps maps)
                          "the world's behaviours use " + std::to_string(m_messages.size()) +
                              " message names; at most 32 are allowed");
     }
+    // CrowdAgent keeps its type, base and animation in 16 bits.
+    const auto atMost = [&](std::size_t count, const char* what) {
+        if (count > 32767) {
+            throw InputError(m_world.file.string(), 0,
+                             "the world has " + std::to_string(count) + " " + what + "; at most 32,767 are allowed");
+        }
+    };
+    atMost(m_world.types.size(), "agent types");
+    atMost(m_world.bases.size(), "bases");
+    atMost(m_animations.size(), "animation names");
     float sight = 1.0f;
     for (const AgentType& type : m_world.types) sight = std::max(sight, type.sightRadius);
     // Cells as wide as the longest sight, at most kMaxCells along a side: a

@@ -32,9 +32,11 @@ namespace stoa {
 
 class StepWorkers;
 
-struct CrowdAgent {
-    int type = 0;                 // index into CrowdWorld::types
-    int team = 0;                 // index into CrowdWorld::bases (0 when there are none)
+/// One agent: 64 bytes on a 64-byte boundary, so the step reads one cache
+/// line an agent (a world has at most 32,767 types, bases and animations).
+struct alignas(64) CrowdAgent {
+    std::int16_t type = 0;        // index into CrowdWorld::types
+    std::int16_t team = 0;        // index into CrowdWorld::bases (0 when there are none)
     int spawn = 0;                // index into CrowdWorld::spawns
     glm::vec2 position{0.0f};     // x, z in metres
     float y = 0.0f;               // heightAt(position)
@@ -43,7 +45,7 @@ struct CrowdAgent {
     int state = 0;                // the FSM state, or the layer that ran (-1: none)
     float timeInState = 0.0f;     // seconds
     float animationTime = 0.0f;   // seconds into the current animation
-    int animation = 0;            // the MD2 animation its state or layer plays: CrowdSimulation::animationName(animation)
+    std::int16_t animation = 0;   // the MD2 animation its state or layer plays: CrowdSimulation::animationName(animation)
     bool carrying = false;
     bool alive = true;
     float deadFor = 0.0f;         // seconds since it was attacked (it comes back after respawnSeconds)
