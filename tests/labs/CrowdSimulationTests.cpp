@@ -465,6 +465,21 @@ TEST_CASE("Crowd: a state or layer out of range from the lab code throws std::ou
     CHECK(crowd.stateName(0).empty());
 }
 
+TEST_CASE("Crowd: a world with more than 32,767 agent types is refused with the limit", "[crowd][simulation]") {
+    // CrowdAgent keeps its type in 16 bits.
+    Example e = example("predators_prey.xml");
+    e.world.types.resize(32768, e.world.types.front());
+    try {
+        CrowdSimulation crowd = crowdWith(e.world, e.maps, testCode());
+        FAIL("no exception");
+    } catch (const InputError& error) {
+        INFO(error.what());
+        CHECK(contains(error.what(), "predators_prey.xml"));
+        CHECK(contains(error.message(), "32768 agent types"));
+        CHECK(contains(error.message(), "at most 32,767"));
+    }
+}
+
 TEST_CASE("Crowd: an area without walkable ground throws InputError naming the world file and its line",
           "[crowd][simulation]") {
     const GroundMaps maps = groundWithBlockedMiddle();
