@@ -87,8 +87,6 @@ CrowdSimulation::CrowdSimulation(const CrowdWorld& world, GroundMaps maps)
         GroundMap map;
         map.scale = glm::vec2(grid.width, grid.height) / (grid.footprintMax - grid.footprintMin);
         map.min = grid.footprintMin + shift / map.scale;
-        map.lastCol = std::max(0, grid.width - 1);
-        map.lastRow = std::max(0, grid.height - rowsRead);
         map.width = grid.height >= rowsRead ? static_cast<std::size_t>(grid.width) : 0;
         return map;
     };

@@ -271,12 +271,12 @@ private:
     int (*m_arbitrateLayers)(const SubsumptionStack&, const CrowdSenses&) = nullptr;
     int (*m_stepStateMachine)(const StateMachine&, int, const CrowdSenses&, std::vector<const Action*>&) = nullptr;
 
-    // The maps as the prefetch reads them: texel = (xz - min) * scale, clamped.
+    // The maps as the prefetch reads them: texel = (xz - min) * scale (not
+    // clamped: a prefetch off the map fetches nothing useful and never faults).
     struct GroundMap {
         glm::vec2 min{0.0f};
         glm::vec2 scale{0.0f};
-        int lastCol = 0, lastRow = 0;
-        std::size_t width = 0;   // 0: nothing to prefetch
+        std::size_t width = 0;   // 0: nothing to prefetch (a map too small for the rows read)
     };
     GroundMap m_prefetchCollision;
     GroundMap m_prefetchHeights;   // shifted half a texel, its last row one up (two rows read)
