@@ -12,8 +12,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace lab04 {
 
@@ -93,25 +96,31 @@ bool finite(const glm::vec4& t) {
     return std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z) && std::isfinite(t.w);
 }
 
-} // namespace
-
-stoa::CheckResult checkTangentsWithoutNans() {
-    // Vertices 0-2: a good triangle in the XY plane, u along +X, v along +Y.
-    // Vertices 0, 3, 4: a triangle whose uvs (0,0), (1,1), (2,2) lie on a line.
-    // Vertices 5-7: a triangle with the same uv on all three corners.
+/// A mesh in the z = 0 plane, every normal +Z, with computeTangents() run on it.
+stoa::Mesh flatMeshWithTangents(const std::vector<glm::vec3>& positions, const std::vector<glm::vec2>& uvs,
+                                std::vector<std::uint32_t> indices) {
     stoa::Mesh mesh;
-    const glm::vec3 positions[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0},
-                                   {3, 0, 0}, {4, 0, 0}, {3, 1, 0}};
-    const glm::vec2 uvs[] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {2, 2}, {0.5f, 0.5f}, {0.5f, 0.5f}, {0.5f, 0.5f}};
-    for (int i = 0; i < 8; ++i) {
+    for (std::size_t i = 0; i < positions.size(); ++i) {
         stoa::Vertex vertex{};
         vertex.position = positions[i];
         vertex.normal = glm::vec3(0.0f, 0.0f, 1.0f);
         vertex.uv = uvs[i];
         mesh.vertices.push_back(vertex);
     }
-    mesh.indices = {0, 1, 2, 0, 3, 4, 5, 6, 7};
+    mesh.indices = std::move(indices);
     stoa::computeTangents(mesh);
+    return mesh;
+}
+
+} // namespace
+
+stoa::CheckResult checkTangentsWithoutNans() {
+    // Vertices 0-2: a good triangle in the XY plane, u along +X, v along +Y.
+    // Vertices 0, 3, 4: a triangle whose uvs (0,0), (1,1), (2,2) lie on a line.
+    // Vertices 5-7: a triangle with the same uv on all three corners.
+    const stoa::Mesh mesh = flatMeshWithTangents(
+        {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {3, 0, 0}, {4, 0, 0}, {3, 1, 0}},
+        {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {2, 2}, {0.5f, 0.5f}, {0.5f, 0.5f}, {0.5f, 0.5f}}, {0, 1, 2, 0, 3, 4, 5, 6, 7});
 
     const char* const what[] = {"vertex 0 (the good triangle, and one whose uvs lie on a line)",
                                 "vertex 1 (the good triangle)", "vertex 2 (the good triangle)",
@@ -159,16 +168,9 @@ stoa::CheckResult checkTangentsFollowTheUvs() {
     };
     const glm::vec3 corners[] = {{0.2f, 0.1f, 0.0f}, {1.3f, 0.4f, 0.0f}, {0.5f, 1.7f, 0.0f}};
     for (const glm::mat2& map : maps) {
-        stoa::Mesh mesh;
-        for (const glm::vec3& corner : corners) {
-            stoa::Vertex vertex{};
-            vertex.position = corner;
-            vertex.normal = glm::vec3(0.0f, 0.0f, 1.0f);
-            vertex.uv = map * glm::vec2(corner);
-            mesh.vertices.push_back(vertex);
-        }
-        mesh.indices = {0, 1, 2};
-        stoa::computeTangents(mesh);
+        std::vector<glm::vec2> uvs;
+        for (const glm::vec3& corner : corners) uvs.push_back(map * glm::vec2(corner));
+        const stoa::Mesh mesh = flatMeshWithTangents({corners[0], corners[1], corners[2]}, uvs, {0, 1, 2});
         const glm::mat2 back = glm::inverse(map);
         const glm::vec3 alongU(glm::normalize(back[0]), 0.0f), alongV(back[1], 0.0f);
         const float handedness = glm::dot(glm::cross(glm::vec3(0.0f, 0.0f, 1.0f), alongU), alongV) < 0.0f ? -1.0f : 1.0f;
@@ -191,22 +193,14 @@ stoa::CheckResult checkTangentsFollowTheUvs() {
     // triangle's own scale), then made unit: not a sum of unit vectors, nor of T
     // scaled some other way.
     {
-        stoa::Mesh mesh;
-        const glm::vec3 positions[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0.5f, 0}};
-        const glm::vec2 uvs[] = {{0, 0}, {0.5f, 0.25f}, {-0.25f, 0.5f}, {-1.5f, 0.4f}};
-        for (int i = 0; i < 4; ++i) {
-            stoa::Vertex vertex{};
-            vertex.position = positions[i];
-            vertex.normal = glm::vec3(0.0f, 0.0f, 1.0f);
-            vertex.uv = uvs[i];
-            mesh.vertices.push_back(vertex);
-        }
-        mesh.indices = {0, 1, 2, 0, 2, 3};
-        stoa::computeTangents(mesh);
+        const stoa::Mesh mesh = flatMeshWithTangents({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0.5f, 0}},
+                                                     {{0, 0}, {0.5f, 0.25f}, {-0.25f, 0.5f}, {-1.5f, 0.4f}},
+                                                     {0, 1, 2, 0, 2, 3});
         // dp/du of a triangle: the first column of the inverse of its uv edges' 2 x 2 map.
         const auto alongU = [&](int a, int b, int c) {
-            const glm::mat2 edges(glm::vec2(positions[b] - positions[a]), glm::vec2(positions[c] - positions[a]));
-            const glm::mat2 uvEdges(uvs[b] - uvs[a], uvs[c] - uvs[a]);
+            const std::vector<stoa::Vertex>& v = mesh.vertices;
+            const glm::mat2 edges(glm::vec2(v[b].position - v[a].position), glm::vec2(v[c].position - v[a].position));
+            const glm::mat2 uvEdges(v[b].uv - v[a].uv, v[c].uv - v[a].uv);
             return glm::vec3((edges * glm::inverse(uvEdges))[0], 0.0f);
         };
         const glm::vec3 expected = glm::normalize(alongU(0, 1, 2) + alongU(0, 2, 3));
