@@ -43,8 +43,12 @@ std::vector<GradeResult> gradeCases(const std::vector<CaseJob>& jobs, const RunS
     std::vector<GradeResult> results(jobs.size());
     // Every reference is read (and kept) before the first lab program runs.
     std::vector<std::filesystem::path> references;
-    for (const CaseJob& job : jobs) references.push_back(job.reference);
-    ReferenceGuard guard(references);
+    std::vector<std::filesystem::path> workFolders;
+    for (const CaseJob& job : jobs) {
+        references.push_back(job.reference);
+        workFolders.push_back(job.workDir);
+    }
+    ReferenceGuard guard(references, workFolders);
     std::mutex progressMutex;
     std::size_t done = 0;
     // A program that has timed out once may hang: its remaining cases get the

@@ -47,7 +47,7 @@ std::uint64_t contentHash(const std::string& bytes) {
     return hash;
 }
 
-ReferenceGuard::ReferenceGuard(const std::vector<fs::path>& references) {
+ReferenceGuard::ReferenceGuard(const std::vector<fs::path>& references, const std::vector<fs::path>& workFolders) {
     std::set<fs::path> folders;
     for (const fs::path& reference : references) {
         fs::path file = normalized(reference);
@@ -70,6 +70,13 @@ ReferenceGuard::ReferenceGuard(const std::vector<fs::path>& references) {
         for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
             m_presentAtStart.insert(it->path());   // folders too: the mistake gallery lives in one
             if (it->is_regular_file(error) && !m_files.count(it->path())) record(it->path());
+        }
+        // A work folder below a guarded folder (a test's temporary folder holding
+        // both) is created, and filled, while other cases run.
+        for (const fs::path& work : workFolders) {
+            const fs::path inside = normalized(work).lexically_relative(folder);
+            if (!inside.empty() && *inside.begin() != ".." && *inside.begin() != ".")
+                m_graderEntries.insert(folder / *inside.begin());
         }
     }
 }
@@ -124,7 +131,8 @@ std::vector<fs::path> ReferenceGuard::verifyAndRestore() {
         std::error_code error;
         std::vector<fs::path> added;
         for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error))
-            if (!m_files.count(it->path()) && !m_presentAtStart.count(it->path())) added.push_back(it->path());
+            if (!m_files.count(it->path()) && !m_presentAtStart.count(it->path()) && !m_graderEntries.count(it->path()))
+                added.push_back(it->path());
         for (const fs::path& path : added) {
             fs::remove_all(path, error);
             changed.push_back(path);

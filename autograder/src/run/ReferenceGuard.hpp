@@ -25,8 +25,11 @@ class ReferenceGuard {
 public:
     /// Records `references` (files that may be missing) and every regular file in
     /// their folders. Never throws for a file it cannot read: that file is then
-    /// only watched for appearing.
-    explicit ReferenceGuard(const std::vector<std::filesystem::path>& references);
+    /// only watched for appearing. `workFolders` are the grader's own (the cases'
+    /// work folders, made later): where one lies inside a guarded folder, the
+    /// entry that leads to it is not "a file that appeared" and stays.
+    explicit ReferenceGuard(const std::vector<std::filesystem::path>& references,
+                            const std::vector<std::filesystem::path>& workFolders = {});
 
     /// The reference decoded at construction; nullptr when it did not exist or did
     /// not decode (then decodeError() says why).
@@ -61,6 +64,7 @@ private:
     std::map<std::filesystem::path, Record> m_files;
     std::vector<std::filesystem::path> m_folders;
     std::set<std::filesystem::path> m_presentAtStart;   // every entry of the guarded folders at construction
+    std::set<std::filesystem::path> m_graderEntries;    // entries of the guarded folders on the way to a work folder
     std::map<std::filesystem::path, Decoded> m_decoded;
     std::mutex m_mutex;
 };
