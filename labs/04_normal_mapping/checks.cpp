@@ -84,6 +84,35 @@ stoa::CheckResult checkNormalMapWraps() {
                                    "(docs: From heights to normals)");
 }
 
+stoa::CheckResult checkNormalMapEncoding() {
+    // Flat height maps at three heights: every normal is the unbent (0, 0, 1).
+    for (const int level : {0, 77, 255}) {
+        stoa::Image heights(6, 4, 1);
+        for (int i = 0; i < heights.width() * heights.height(); ++i)
+            heights.data()[i] = static_cast<std::uint8_t>(level);
+        const stoa::Image normals = stoa::normalMapFromHeight(heights, 4.0f);
+        if (normals.width() != heights.width() || normals.height() != heights.height() || normals.channels() < 3)
+            return stoa::CheckResult::fail("normalMapFromHeight() returned a " + std::to_string(normals.width()) +
+                                           "x" + std::to_string(normals.height()) + " image with " +
+                                           std::to_string(normals.channels()) +
+                                           " channels for a 6x4 height map (expected the same size, RGB; docs: From "
+                                           "heights to normals)");
+        for (int y = 0; y < normals.height(); ++y)
+            for (int x = 0; x < normals.width(); ++x) {
+                const glm::u8vec4 texel = normals.pixel(x, y);
+                if (texel.r == 128 && texel.g == 128 && texel.b == 255) continue;
+                return stoa::CheckResult::fail(
+                    "normalMapFromHeight() of a flat 6x4 height map (every height " + std::to_string(level) +
+                    ") gives the texel (" + std::to_string(texel.r) + ", " + std::to_string(texel.g) + ", " +
+                    std::to_string(texel.b) + ") at (" + std::to_string(x) + ", " + std::to_string(y) +
+                    "); the unbent normal (0, 0, 1) is stored as round((n * 0.5 + 0.5) * 255) = (128, 128, 255): "
+                    "rounded, not cut off (docs: From heights to normals)");
+            }
+    }
+    return stoa::CheckResult::pass("flat height maps give (128, 128, 255) everywhere: round((n * 0.5 + 0.5) * 255) "
+                                   "of the unbent normal");
+}
+
 namespace {
 
 std::string tangentText(const glm::vec4& t) {
@@ -92,24 +121,37 @@ std::string tangentText(const glm::vec4& t) {
     return text;
 }
 
+std::string vectorText(const glm::vec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.3f, %.3f, %.3f)", v.x, v.y, v.z);
+    return text;
+}
+
 bool finite(const glm::vec4& t) {
     return std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z) && std::isfinite(t.w);
 }
 
-/// A mesh in the z = 0 plane, every normal +Z, with computeTangents() run on it.
-stoa::Mesh flatMeshWithTangents(const std::vector<glm::vec3>& positions, const std::vector<glm::vec2>& uvs,
-                                std::vector<std::uint32_t> indices) {
+/// A mesh with the given vertex normals, with computeTangents() run on it.
+stoa::Mesh meshWithTangents(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+                            const std::vector<glm::vec2>& uvs, std::vector<std::uint32_t> indices) {
     stoa::Mesh mesh;
     for (std::size_t i = 0; i < positions.size(); ++i) {
         stoa::Vertex vertex{};
         vertex.position = positions[i];
-        vertex.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+        vertex.normal = normals[i];
         vertex.uv = uvs[i];
         mesh.vertices.push_back(vertex);
     }
     mesh.indices = std::move(indices);
     stoa::computeTangents(mesh);
     return mesh;
+}
+
+/// A mesh in the z = 0 plane, every normal +Z, with computeTangents() run on it.
+stoa::Mesh flatMeshWithTangents(const std::vector<glm::vec3>& positions, const std::vector<glm::vec2>& uvs,
+                                std::vector<std::uint32_t> indices) {
+    return meshWithTangents(positions, std::vector<glm::vec3>(positions.size(), glm::vec3(0.0f, 0.0f, 1.0f)), uvs,
+                            std::move(indices));
 }
 
 } // namespace
@@ -149,8 +191,25 @@ stoa::CheckResult checkTangentsWithoutNans() {
                                                    "with w = +1: any will do where no triangle says which way u grows "
                                                    "(docs: The tangent frame)");
     }
+    // The fallback for any normal: one triangle with one uv on all corners, whose
+    // corners' normals lie along the axes (a perpendicular made by crossing with
+    // one fixed axis vanishes for the normal along that axis).
+    const glm::vec3 axisNormals[] = {{1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+    const stoa::Mesh axes = meshWithTangents({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+                                             {axisNormals[0], axisNormals[1], axisNormals[2]},
+                                             {{0.5f, 0.5f}, {0.5f, 0.5f}, {0.5f, 0.5f}}, {0, 1, 2});
+    for (int i = 0; i < 3; ++i) {
+        const glm::vec4 t = axes.vertices[static_cast<std::size_t>(i)].tangent;
+        const glm::vec3 n = axisNormals[i];
+        if (!finite(t) || std::abs(glm::length(glm::vec3(t)) - 1.0f) > 1e-3f ||
+            std::abs(glm::dot(glm::vec3(t), n)) > 1e-3f || t.w != 1.0f)
+            return stoa::CheckResult::fail(
+                "computeTangents(): a vertex with the normal " + vectorText(n) + " whose only triangle has one uv on all corners gets the tangent " + tangentText(t) +
+                ", expected a finite unit tangent perpendicular to that normal, with w = +1: the fallback must "
+                "work for every normal, also one along the axis it crosses with (docs: The tangent frame)");
+    }
     return stoa::CheckResult::pass("triangles whose uvs lie on a line add nothing, and every vertex gets a finite "
-                                   "unit tangent perpendicular to its normal");
+                                   "unit tangent perpendicular to its normal, whichever way it points");
 }
 
 stoa::CheckResult checkTangentsFollowTheUvs() {
@@ -211,8 +270,47 @@ stoa::CheckResult checkTangentsFollowTheUvs() {
                                            "the two triangles' T (each as its 2 x 2 system gives it) points along " +
                                            tangentText(glm::vec4(expected, 1.0f)) + " (docs: The tangent frame)");
     }
+    // Smooth normals lean: the triangle lies in z = 0 with u along +X, but its
+    // corners' normals tilt. T must lose its part along each corner's normal.
+    {
+        const glm::vec3 normals[] = {glm::normalize(glm::vec3(0.5f, 0.3f, 0.8f)),
+                                     glm::normalize(glm::vec3(-0.4f, 0.1f, 0.9f)),
+                                     glm::normalize(glm::vec3(0.2f, -0.6f, 0.7f))};
+        const stoa::Mesh mesh = meshWithTangents({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+                                                 {normals[0], normals[1], normals[2]}, {{0, 0}, {1, 0}, {0, 1}},
+                                                 {0, 1, 2});
+        for (int i = 0; i < 3; ++i) {
+            const glm::vec3& n = normals[i];
+            const glm::vec3 expected = glm::normalize(glm::vec3(1, 0, 0) - n * n.x);
+            const glm::vec4 t = mesh.vertices[static_cast<std::size_t>(i)].tangent;
+            if (!finite(t) || glm::length(glm::vec3(t) - expected) > 1e-3f)
+                return stoa::CheckResult::fail(
+                    "computeTangents() gives a vertex whose normal " + vectorText(n) + " leans out of its triangle "
+                    "(u along +X) the tangent " + tangentText(t) + "; without its part along N, made unit, T is " +
+                    vectorText(expected) + " (Gram-Schmidt, step 1 per vertex) (docs: The tangent frame)");
+        }
+    }
+    // A vertex shared by a triangle whose v grows along +Y and one whose v grows
+    // along -Y, stretched `stretch` times: B_sum is the two triangles' B as solved,
+    // (0, 1 - 1/stretch, 0), and w is +1 where it is zero (">= 0", docs: Handedness).
+    for (const float stretch : {1.0f, 2.0f, 0.5f}) {
+        const stoa::Mesh mesh = flatMeshWithTangents({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 1, 0}},
+                                                     {{0, 0}, {1, 0}, {0, 1}, {0, -stretch}}, {0, 1, 2, 0, 1, 3});
+        const float bSum = 1.0f - 1.0f / stretch;
+        const float expected = bSum >= 0.0f ? 1.0f : -1.0f;
+        const glm::vec4 t = mesh.vertices[0].tangent;
+        if (!finite(t) || t.w != expected)
+            return stoa::CheckResult::fail(
+                "computeTangents(): a vertex shared by a triangle whose v grows along +Y (B = (0, 1, 0)) and one "
+                "whose v grows along -Y, its uvs stretched " + std::to_string(stretch) + " times (B = (0, " +
+                std::to_string(-1.0f / stretch) + ", 0)), gets w " + std::to_string(t.w) + "; B_sum is (0, " +
+                std::to_string(bSum) + ", 0), so w is " + std::to_string(expected) +
+                " (+1 when dot(cross(N, T), B_sum) >= 0; B as each triangle's 2 x 2 system gives it) "
+                "(docs: Handedness)");
+    }
     return stoa::CheckResult::pass("tangents and handedness follow u and v for six uv maps that scale, shear, "
-                                   "mirror and turn, and a shared vertex sums its triangles' T as solved");
+                                   "mirror and turn, a shared vertex sums its triangles' T and B as solved, and T "
+                                   "loses its part along a leaning normal");
 }
 
 } // namespace lab04

@@ -13,6 +13,11 @@ namespace lab04 {
 /// GL_REPEAT does when the wall samples it.
 stoa::CheckResult checkNormalMapWraps();
 
+/// normal_map_encoding: normalMapFromHeight() of flat height maps stores the
+/// unbent normal (0, 0, 1) as round((n * 0.5 + 0.5) * 255) = (128, 128, 255) in
+/// every texel (docs: "From heights to normals").
+stoa::CheckResult checkNormalMapEncoding();
+
 /// tangents_without_nans: computeTangents() on a mesh with a triangle whose uvs
 /// lie on a line (det = 0): that triangle adds nothing, the good triangle's
 /// vertices keep its tangent, and a vertex that only the bad triangle uses still

@@ -128,6 +128,7 @@ public:
 
     stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
         if (spec.check == "normal_map_wraps") return lab04::checkNormalMapWraps();
+        if (spec.check == "normal_map_encoding") return lab04::checkNormalMapEncoding();
         if (spec.check == "tangents_without_nans") return lab04::checkTangentsWithoutNans();
         if (spec.check == "tangents_follow_the_uvs") return lab04::checkTangentsFollowTheUvs();
         return Lab::runCheck(spec);
