@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,10 +42,10 @@ struct TileScene {
     stoa::TileGrid grid;
     glm::mat4 projection;
     float near = 0.5f;
-    TileScene() {
-        grid.viewport = glm::ivec2(400, 270);
+    explicit TileScene(glm::ivec2 viewport = glm::ivec2(400, 270)) {
+        grid.viewport = viewport;
         grid.tileSize = 32;
-        projection = glm::perspective(glm::radians(60.0f), 400.0f / 270.0f, near, 80.0f);
+        projection = glm::perspective(glm::radians(60.0f), float(viewport.x) / float(viewport.y), near, 80.0f);
     }
 };
 
@@ -163,22 +164,23 @@ stoa::CheckResult checkReachSolvesTheFalloff() {
     stoa::PointLight steady;
     steady.attenuation = glm::vec3(1.0f, 0.0f, 0.0f);
     const float everywhere = stoa::lightReach(steady, cutoff);
-    if (!(everywhere >= 1e6f))
+    if (!(everywhere >= 1e6f) || !std::isfinite(everywhere))
         return stoa::CheckResult::fail("lightReach() of a light with (c, l, q) = (1, 0, 0), which never falls off, is " +
-                                       number(everywhere) + "; it reaches everything: return a very large distance "
-                                       "(docs: How far a light reaches)");
+                                       number(everywhere) + "; it reaches everything: return a very large, finite "
+                                       "distance (the light's volume is a sphere of that radius: an infinite one "
+                                       "makes its vertices infinite or NaN) (docs: How far a light reaches)");
     return stoa::CheckResult::pass("lightReach() meets the cut-off for quadratic and linear lights, is 0 for a light "
                                    "too dim and very large for one that never falls off (7 lights)");
 }
 
-stoa::CheckResult checkTileRangesHoldTheSphere() {
-    const TileScene scene;
+// Points on and in each sphere (its four points furthest left, right, down and
+// up first; 200 more for the first `spread` lights): the first whose tile
+// lightTileRange() leaves out, as a failure message. `landed` counts the points
+// that land on the picture.
+std::optional<std::string> firstMissedTile(const TileScene& scene, const std::vector<stoa::LightSphere>& lights,
+                                           int spread, stoa::CheckRandom& random, int& landed) {
     const glm::ivec2 tiles = scene.grid.tiles();
-    stoa::CheckRandom random(20261129u);
-    int landed = 0;
-    std::vector<stoa::LightSphere> lights = lightsAround(scene, random, 300);
-    const int spread = static_cast<int>(lights.size());
-    for (const stoa::LightSphere& light : lightsAtTileEdges(scene, random)) lights.push_back(light);
+    const glm::ivec2 size = scene.grid.viewport;
     for (int n = 0; n < static_cast<int>(lights.size()); ++n) {
         const stoa::LightSphere& light = lights[static_cast<std::size_t>(n)];
         const stoa::TileRange range = stoa::lightTileRange(light, scene.projection, scene.near, scene.grid);
@@ -199,15 +201,28 @@ stoa::CheckResult checkTileRangesHoldTheSphere() {
             const glm::ivec2 tile = glm::ivec2(glm::floor(pixel)) / scene.grid.tileSize;
             ++landed;
             if (!holds(range, tile))
-                return stoa::CheckResult::fail(
-                    "lightTileRange() of " + describe(light) + " is columns " + std::to_string(range.first.x) + " to " +
+                return "lightTileRange() of " + describe(light) + " is columns " + std::to_string(range.first.x) + " to " +
                     std::to_string(range.last.x) + ", rows " + std::to_string(range.first.y) + " to " +
                     std::to_string(range.last.y) + ", but a point of its sphere lands in pixel (" +
                     number(pixel.x) + ", " + number(pixel.y) + "), tile " + tileName(tile) + " of " +
-                    tileName(tiles) + " on a 400 x 270 picture in tiles of 32. The range must hold every tile the "
-                    "sphere covers, at every edge of the picture (docs: Which tiles a light touches)");
+                    tileName(tiles) + " on a " + std::to_string(size.x) + " x " + std::to_string(size.y) +
+                    " picture in tiles of 32. The range must hold every tile the "
+                    "sphere covers, at every edge of the picture (docs: Which tiles a light touches)";
         }
     }
+    return std::nullopt;
+}
+
+stoa::CheckResult checkTileRangesHoldTheSphere() {
+    const TileScene scene;
+    const glm::ivec2 tiles = scene.grid.tiles();
+    stoa::CheckRandom random(20261129u);
+    int landed = 0;
+    std::vector<stoa::LightSphere> lights = lightsAround(scene, random, 300);
+    const int spread = static_cast<int>(lights.size());
+    for (const stoa::LightSphere& light : lightsAtTileEdges(scene, random)) lights.push_back(light);
+    if (std::optional<std::string> missed = firstMissedTile(scene, lights, spread, random, landed))
+        return stoa::CheckResult::fail(*missed);
     for (const auto& [light, side] : lightsOffThePicture(scene, random)) {
         const stoa::TileRange range = stoa::lightTileRange(light, scene.projection, scene.near, scene.grid);
         if (!range.empty())
@@ -218,24 +233,68 @@ stoa::CheckResult checkTileRangesHoldTheSphere() {
                 " the picture: its rectangle lies outside [-1, 1] on that axis, and the range is empty "
                 "(docs: Which tiles a light touches)");
     }
+    // Spheres that cross the near plane, their centres a little before or behind
+    // it and off to the sides: part of each lies behind the eye, where nothing
+    // can be projected, so the range is every tile.
+    for (int i = 0; i < 20; ++i) {
+        stoa::LightSphere light;
+        light.reach = random.between(0.3f, 3.0f);
+        light.centerView = glm::vec3(random.between(-2.0f, 2.0f), random.between(-2.0f, 2.0f),
+                                     -scene.near + random.between(-0.9f, 0.9f) * light.reach);
+        const stoa::TileRange range = stoa::lightTileRange(light, scene.projection, scene.near, scene.grid);
+        if (range.empty() || range.first != glm::ivec2(0) || range.last != tiles - 1)
+            return stoa::CheckResult::fail(
+                "lightTileRange() of " + describe(light) + " is " +
+                (range.empty() ? std::string("empty")
+                               : "columns " + std::to_string(range.first.x) + " to " + std::to_string(range.last.x) +
+                                     ", rows " + std::to_string(range.first.y) + " to " + std::to_string(range.last.y)) +
+                ", but the sphere crosses the near plane (z = -0.5): part of it lies behind the eye, where its corners "
+                "cannot be projected, so the range is every tile, columns 0 to " + std::to_string(tiles.x - 1) +
+                ", rows 0 to " + std::to_string(tiles.y - 1) + " (docs: Which tiles a light touches)");
+    }
+    // A picture whose last column and row of tiles are one pixel wide (384 and 256
+    // are whole tiles): the last pixel, viewport - 1, starts a tile of its own.
+    const TileScene thin(glm::ivec2(385, 257));
+    const std::vector<stoa::LightSphere> edgeLights = lightsAround(thin, random, 150);
+    if (std::optional<std::string> missed = firstMissedTile(thin, edgeLights, 150, random, landed))
+        return stoa::CheckResult::fail(*missed);
     return stoa::CheckResult::pass("lightTileRange() holds the tile of every one of " + std::to_string(landed) +
-                                   " points of " + std::to_string(lights.size()) +
-                                   " spheres in and around the picture (tiny ones at the tiles' edges), and is "
-                                   "empty for 40 lights wholly off it");
+                                   " points of " + std::to_string(lights.size() + edgeLights.size()) +
+                                   " spheres in and around two pictures (tiny ones at the tiles' edges; one picture "
+                                   "whose last tiles are a pixel wide), is empty for 40 lights wholly off it and "
+                                   "whole for 20 that cross the near plane");
 }
 
 stoa::CheckResult checkTileListsMatchTheRanges() {
     const TileScene scene;
     stoa::CheckRandom random(20261129u);
-    const std::vector<stoa::LightSphere> lights = lightsAround(scene, random, 60);
+    std::vector<stoa::LightSphere> lights = lightsAround(scene, random, 60);
     std::vector<stoa::DepthRange> depths(static_cast<std::size_t>(scene.grid.tileCount()));
     for (stoa::DepthRange& range : depths) {
         if (random.next() < 0.15f) continue;   // sky: empty
         range.nearest = random.between(1.0f, 25.0f);
         range.farthest = range.nearest + random.between(0.0f, 10.0f);
     }
+    // Light 0 around the camera (its range is every tile), and a last tile that it
+    // reaches: the last tile's list is written too, and every list that has light
+    // 0 starts with it.
+    stoa::LightSphere around;
+    around.centerView = glm::vec3(0.3f, -0.2f, -0.4f);
+    around.reach = 4.0f;
+    lights.insert(lights.begin(), around);
+    depths.back().nearest = 2.0f;
+    depths.back().farthest = 3.0f;
     const stoa::TileLightLists lists = stoa::buildTileLightLists(lights, scene.projection, scene.near, scene.grid, depths);
     const int tileCount = scene.grid.tileCount();
+    if (lists.grid.viewport != scene.grid.viewport || lists.grid.tileSize != scene.grid.tileSize)
+        return stoa::CheckResult::fail("buildTileLightLists() gave lists whose grid is " +
+                                       std::to_string(lists.grid.viewport.x) + " x " +
+                                       std::to_string(lists.grid.viewport.y) + " pixels in tiles of " +
+                                       std::to_string(lists.grid.tileSize) + "; they were built for " +
+                                       std::to_string(scene.grid.viewport.x) + " x " +
+                                       std::to_string(scene.grid.viewport.y) + " in tiles of " +
+                                       std::to_string(scene.grid.tileSize) +
+                                       ": lists.grid is the grid given (docs: Building the lists)");
     if (lists.offsets.size() != static_cast<std::size_t>(tileCount) + 1 || lists.offsets.front() != 0 ||
         static_cast<std::size_t>(lists.offsets.back()) != lists.lights.size())
         return stoa::CheckResult::fail("buildTileLightLists() gave " + std::to_string(lists.offsets.size()) +
@@ -273,7 +332,7 @@ stoa::CheckResult checkTileListsMatchTheRanges() {
         }
     }
     return stoa::CheckResult::pass("buildTileLightLists() lists exactly the right lights, in order, in each of " +
-                                   std::to_string(tileCount) + " tiles (60 lights, " +
+                                   std::to_string(tileCount) + " tiles (" + std::to_string(lights.size()) + " lights, " +
                                    std::to_string(lists.lights.size()) + " entries)");
 }
 
