@@ -97,6 +97,45 @@ stoa::CheckResult checkDepthPassBothFaces(const stoa::Program& depthProgram) {
                                    "object with the depth program (docs: The two passes)");
 }
 
+stoa::CheckResult checkSplitsBlendTheSchemes() {
+    struct Split {
+        float near, far;
+        int count;
+        float lambda;
+    };
+    // Near and far of the same order, where the uniform split's `near` matters,
+    // and the cases' own range; lambda from uniform (0) to logarithmic (1).
+    const Split splits[] = {{2.0f, 10.0f, 4, 0.0f}, {2.0f, 10.0f, 4, 0.3f}, {2.0f, 10.0f, 4, 1.0f},
+                            {0.5f, 60.0f, 3, 0.75f}, {0.1f, 110.0f, 4, 0.75f}};
+    for (const Split& split : splits) {
+        const std::vector<float> got = stoa::cascadeSplits(split.near, split.far, split.count, split.lambda);
+        const std::string what = "cascadeSplits(" + number(split.near, 1) + ", " + number(split.far, 1) + ", " +
+                                 std::to_string(split.count) + ", " + number(split.lambda) + ")";
+        if (got.size() != static_cast<std::size_t>(split.count) + 1)
+            return stoa::CheckResult::fail(what + " gave " + std::to_string(got.size()) + " depths; expected count + 1 = " +
+                                           std::to_string(split.count + 1) + " (docs: The split scheme)");
+        for (int i = 0; i <= split.count; ++i) {
+            const double t = static_cast<double>(i) / split.count;
+            const double uniform = split.near + (split.far - split.near) * t;
+            const double logarithmic = split.near * std::pow(static_cast<double>(split.far) / split.near, t);
+            const double expected = split.lambda * logarithmic + (1.0 - split.lambda) * uniform;
+            const float value = got[static_cast<std::size_t>(i)];
+            if (std::isfinite(value) && std::abs(value - expected) <= 1e-4 * expected) continue;
+            return stoa::CheckResult::fail(
+                what + " gave " + number(value, 4) + " m for depth " + std::to_string(i) + "; lambda z_log + (1 - "
+                "lambda) z_uniform there is " + number(expected, 4) + " m, with z_uniform = near + (far - near) i / N = " +
+                number(uniform, 4) + " and z_log = near (far / near)^(i / N) = " + number(logarithmic, 4) +
+                " (docs: The split scheme)");
+        }
+        if (got.front() != split.near || got.back() != split.far)
+            return stoa::CheckResult::fail(what + " starts at " + number(got.front(), 6) + " and ends at " +
+                                           number(got.back(), 6) + "; the first depth is exactly near and the last "
+                                           "exactly far (docs: The split scheme)");
+    }
+    return stoa::CheckResult::pass("the splits blend the logarithmic and uniform schemes by lambda (0, 0.3, 0.75 and 1) "
+                                   "for five ranges, from exactly near to exactly far");
+}
+
 stoa::CheckResult checkSliceCorners() {
     const float fov = 50.0f, aspect = 1.6f, sliceNear = 2.0f, sliceFar = 11.0f;
     const glm::mat4 view = glm::lookAt(glm::vec3(3.0f, 2.0f, 6.0f), glm::vec3(-1.0f, 0.5f, -2.0f), glm::vec3(0.0f, 1.0f, 0.0f));
@@ -212,6 +251,11 @@ stoa::CheckResult checkCascadeHoldsItsSlice() {
         glm::translate(glm::mat4(1.0f), glm::vec3(3.0f, 2.0f, -5.0f)) *
             glm::rotate(glm::mat4(1.0f), glm::radians(35.0f), glm::vec3(0.0f, 1.0f, 0.0f)) *
             glm::rotate(glm::mat4(1.0f), glm::radians(-20.0f), glm::vec3(1.0f, 0.0f, 0.0f)),
+        // High above the scene's box (its top is at y = 12), looking down a little:
+        // the slice's near end leaves the box towards the sun, and the box must
+        // still hold it, though no occluder can stand there.
+        glm::translate(glm::mat4(1.0f), glm::vec3(-4.0f, 24.0f, 6.0f)) *
+            glm::rotate(glm::mat4(1.0f), glm::radians(-15.0f), glm::vec3(1.0f, 0.0f, 0.0f)),
     };
     for (const glm::mat4& camera : cameras) {
         const std::array<glm::vec3, 8> corners = transformed(sliceShape(), camera);
@@ -239,8 +283,8 @@ stoa::CheckResult checkCascadeHoldsItsSlice() {
             }
         }
     }
-    return stoa::CheckResult::pass("the cascade's box holds every corner of two slices, also with the light shining "
-                                   "through the corner furthest from the slice's centre");
+    return stoa::CheckResult::pass("the cascade's box holds every corner of three slices (one above the scene), also "
+                                   "with the light shining through the corner furthest from the slice's centre");
 }
 
 stoa::CheckResult checkTexelSnapping() {

@@ -15,6 +15,11 @@ namespace lab05 {
 /// its front or its back faces the light (docs: "The two passes").
 stoa::CheckResult checkDepthPassBothFaces(const stoa::Program& depthProgram);
 
+/// splits_blend_the_schemes: cascadeSplits() gives count + 1 depths, lambda times
+/// the logarithmic split plus (1 - lambda) times the uniform one, from exactly
+/// near to exactly far (docs: "The split scheme").
+stoa::CheckResult checkSplitsBlendTheSchemes();
+
 /// slice_corners: frustumSliceCorners() returns four corners at the slice's near
 /// distance and four at its far distance from the camera, spread as wide as the
 /// field of view and the aspect ratio say (docs: "Fitting each cascade").

@@ -226,6 +226,7 @@ public:
     stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
         if (spec.check == "depth_pass_both_faces") return lab05::checkDepthPassBothFaces(*m_depthProgram);
         if (spec.check == "slice_corners") return lab05::checkSliceCorners();
+        if (spec.check == "splits_blend_the_schemes") return lab05::checkSplitsBlendTheSchemes();
         if (spec.check == "cascade_depth_reaches_occluders") return lab05::checkCascadeDepthReachesOccluders();
         if (spec.check == "cascade_holds_its_slice") return lab05::checkCascadeHoldsItsSlice();
         if (spec.check == "light_box_holds_the_scene") return lab05::checkLightBoxHoldsTheScene();
