@@ -105,8 +105,11 @@ stoa::CheckResult checkSplitsBlendTheSchemes() {
     };
     // Near and far of the same order, where the uniform split's `near` matters,
     // and the cases' own range; lambda from uniform (0) to logarithmic (1).
+    // The last two blend to ends an ulp off near (lambda 0.1) and far (0.3 to 60)
+    // in float arithmetic, unless they are written exactly.
     const Split splits[] = {{2.0f, 10.0f, 4, 0.0f}, {2.0f, 10.0f, 4, 0.3f}, {2.0f, 10.0f, 4, 1.0f},
-                            {0.5f, 60.0f, 3, 0.75f}, {0.1f, 110.0f, 4, 0.75f}};
+                            {0.5f, 60.0f, 3, 0.75f}, {0.1f, 110.0f, 4, 0.75f}, {0.1f, 60.0f, 4, 0.1f},
+                            {0.3f, 60.0f, 3, 0.75f}};
     for (const Split& split : splits) {
         const std::vector<float> got = stoa::cascadeSplits(split.near, split.far, split.count, split.lambda);
         const std::string what = "cascadeSplits(" + number(split.near, 1) + ", " + number(split.far, 1) + ", " +
@@ -132,8 +135,8 @@ stoa::CheckResult checkSplitsBlendTheSchemes() {
                                            number(got.back(), 6) + "; the first depth is exactly near and the last "
                                            "exactly far (docs: The split scheme)");
     }
-    return stoa::CheckResult::pass("the splits blend the logarithmic and uniform schemes by lambda (0, 0.3, 0.75 and 1) "
-                                   "for five ranges, from exactly near to exactly far");
+    return stoa::CheckResult::pass("the splits blend the logarithmic and uniform schemes by lambda (0 to 1) for seven "
+                                   "ranges, from exactly near to exactly far");
 }
 
 stoa::CheckResult checkSliceCorners() {
@@ -252,9 +255,9 @@ stoa::CheckResult checkCascadeHoldsItsSlice() {
             glm::rotate(glm::mat4(1.0f), glm::radians(35.0f), glm::vec3(0.0f, 1.0f, 0.0f)) *
             glm::rotate(glm::mat4(1.0f), glm::radians(-20.0f), glm::vec3(1.0f, 0.0f, 0.0f)),
         // High above the scene's box (its top is at y = 12), looking down a little:
-        // the slice's near end leaves the box towards the sun, and the box must
-        // still hold it, though no occluder can stand there.
-        glm::translate(glm::mat4(1.0f), glm::vec3(-4.0f, 24.0f, 6.0f)) *
+        // the whole slice lies nearer the sun than any corner of the box, and the
+        // box must still hold it, though no occluder can stand there.
+        glm::translate(glm::mat4(1.0f), glm::vec3(-4.0f, 60.0f, 6.0f)) *
             glm::rotate(glm::mat4(1.0f), glm::radians(-15.0f), glm::vec3(1.0f, 0.0f, 0.0f)),
     };
     for (const glm::mat4& camera : cameras) {
@@ -267,7 +270,9 @@ stoa::CheckResult checkCascadeHoldsItsSlice() {
         // The sun as usual, and a sun that shines straight from the centre through the
         // corner furthest from it: that corner is then as far from the light as the
         // slice's bounding sphere reaches.
-        const glm::vec3 lights[] = {glm::vec3(0.45f, -1.0f, 0.3f), glm::normalize(corners[farthest] - centre)};
+        // And the sun straight overhead, where (0, 1, 0) cannot be the light view's up.
+        const glm::vec3 lights[] = {glm::vec3(0.45f, -1.0f, 0.3f), glm::normalize(corners[farthest] - centre),
+                                    glm::vec3(0.0f, -1.0f, 0.0f)};
         for (const glm::vec3& light : lights) {
             const glm::mat4 matrix = stoa::cascadeLightMatrix(light, corners, 1024, sceneMin, sceneMax);
             for (const glm::vec3& corner : corners) {
@@ -283,8 +288,9 @@ stoa::CheckResult checkCascadeHoldsItsSlice() {
             }
         }
     }
-    return stoa::CheckResult::pass("the cascade's box holds every corner of three slices (one above the scene), also "
-                                   "with the light shining through the corner furthest from the slice's centre");
+    return stoa::CheckResult::pass("the cascade's box holds every corner of three slices (one above the scene), for "
+                                   "the sun overhead, at a slant and shining through the corner furthest from the "
+                                   "slice's centre");
 }
 
 stoa::CheckResult checkTexelSnapping() {
