@@ -37,6 +37,12 @@ std::string number(double value, int decimals = 2) {
 // A slice-like shape: a small quad near the camera at the origin, a large one
 // further along -Z, the order of frustumSliceCorners() (x right when k & 1, y up
 // when k & 2, far when k & 4).
+// Whether a point lies in [-1, 1]^3 (a little slack for rounding); false for NaN,
+// which a degenerate box (near = far) makes.
+bool insideClipCube(const glm::vec3& ndc) {
+    return std::abs(ndc.x) <= 1.0001f && std::abs(ndc.y) <= 1.0001f && std::abs(ndc.z) <= 1.0001f;
+}
+
 std::array<glm::vec3, 8> sliceShape() {
     std::array<glm::vec3, 8> corners;
     for (int k = 0; k < 8; ++k) {
@@ -209,7 +215,7 @@ stoa::CheckResult checkLightBoxHoldsTheScene() {
         for (const glm::vec3& world : corners) {
             const glm::vec4 clip = matrix * glm::vec4(world, 1.0f);
             const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-            if (std::max({std::abs(ndc.x), std::abs(ndc.y), std::abs(ndc.z)}) > 1.0001f)
+            if (!insideClipCube(ndc))
                 return stoa::CheckResult::fail(
                     "directionalLightMatrix() with the light along (" + number(light.x) + ", " + number(light.y) + ", " +
                     number(light.z) + ") puts the scene's corner (" + number(world.x, 1) + ", " + number(world.y, 1) +
@@ -278,7 +284,7 @@ stoa::CheckResult checkCascadeHoldsItsSlice() {
             for (const glm::vec3& corner : corners) {
                 const glm::vec4 clip = matrix * glm::vec4(corner, 1.0f);
                 const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-                if (std::max({std::abs(ndc.x), std::abs(ndc.y), std::abs(ndc.z)}) > 1.0001f)
+                if (!insideClipCube(ndc))
                     return stoa::CheckResult::fail(
                         "with the light along (" + number(light.x) + ", " + number(light.y) + ", " + number(light.z) +
                         "), the slice's corner (" + number(corner.x) + ", " + number(corner.y) + ", " + number(corner.z) +
