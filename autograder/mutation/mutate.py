@@ -106,6 +106,20 @@ def names_cause(cause, mutant):
     return (file, function) == (mutant.file, mutant.function) or Path(mutant.file).name in hint
 
 
+def fingerprint(lab):
+    """What a lab's programs are built from and graded with: its folders' files,
+    their sizes and modification times. A change after the mutants were built
+    would grade old programs against new cases (a check they do not know fails
+    as an error and would count as a kill)."""
+    files = []
+    for folder in (ROOT / "labs" / lab, ROOT / "solutions" / lab, ROOT / "shaders"):
+        for path in sorted(folder.rglob("*")):
+            if path.is_file():
+                status = path.stat()
+                files.append((str(path.relative_to(ROOT)), status.st_size, status.st_mtime_ns))
+    return files
+
+
 def configure_and_build(build, mutants_dir, chosen, jobs):
     command = ["cmake", "-S", str(ROOT), "-B", str(build), "-DSTOA_USE_SOLUTIONS=ON", "-DSTOA_BUILD_TESTS=OFF",
                f"-DSTOA_MUTANTS_DIR={mutants_dir}", "-DCMAKE_BUILD_TYPE=Release", "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG"]
@@ -195,14 +209,22 @@ def main():
         folder = mutants_dir / mutant.lab / "mistakes"
         folder.mkdir(parents=True, exist_ok=True)
         (folder / f"{mutant.id}.mistake").write_text(mutant.mistake_text())
+    sources = {lab: fingerprint(lab) for lab in labs}
     configure_and_build(build, mutants_dir, chosen, args.jobs)
     built = time.time()
 
     causes = {lab: gallery_causes(lab) for lab in labs}
     verdicts = []
+    stale = None
     with tempfile.TemporaryDirectory(prefix="stoa-mutants-") as temporary:
         work = Path(temporary)
         for number, mutant in enumerate(chosen, 1):
+            if fingerprint(mutant.lab) != sources[mutant.lab]:
+                stale = mutant.lab
+                say(f"mutate: stopped before mutant {number} of {len(chosen)}: labs/{stale}, solutions/{stale} or "
+                    "shaders/ changed after the mutants were built, and their programs would be graded against "
+                    "the new cases; the report holds what was graded before, run the sweep again for the rest")
+                break
             status, failed, hints = grade(build, mutant, args.jobs, work)
             wrong_hints = [h for h in hints if not names_cause(causes[mutant.lab].get(h), mutant)]
             verdicts.append({"lab": mutant.lab, "id": mutant.id, "rule": mutant.rule, "file": mutant.file,
@@ -215,6 +237,7 @@ def main():
 
     for lab in labs:
         mine = [v for v in verdicts if v["lab"] == lab]
+        per_lab[lab]["graded"] = len(mine)
         counts = {s: sum(v["status"] == s for v in mine) for s in ("killed", "survived", "not compiled")}
         counted = counts["killed"] + counts["survived"]
         per_lab[lab].update(counts)
@@ -228,6 +251,8 @@ def main():
     print(summary_table(per_lab))
     print(f"{len(chosen)} mutants built in {built - started:.0f} s and graded in {graded - built:.0f} s; "
           f"report: {out / 'mutation-report.md'}")
+    if stale:
+        return 2
     if args.min_score is not None:
         low = [lab for lab, row in per_lab.items() if row["score"] is not None and row["score"] < args.min_score]
         if low:
