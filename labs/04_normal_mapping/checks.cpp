@@ -121,12 +121,6 @@ std::string tangentText(const glm::vec4& t) {
     return text;
 }
 
-std::string vectorText(const glm::vec3& v) {
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.3f, %.3f, %.3f)", v.x, v.y, v.z);
-    return text;
-}
-
 bool finite(const glm::vec4& t) {
     return std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z) && std::isfinite(t.w);
 }
@@ -204,7 +198,7 @@ stoa::CheckResult checkTangentsWithoutNans() {
         if (!finite(t) || std::abs(glm::length(glm::vec3(t)) - 1.0f) > 1e-3f ||
             std::abs(glm::dot(glm::vec3(t), n)) > 1e-3f || t.w != 1.0f)
             return stoa::CheckResult::fail(
-                "computeTangents(): a vertex with the normal " + vectorText(n) + " whose only triangle has one uv on all corners gets the tangent " + tangentText(t) +
+                "computeTangents(): a vertex with the normal " + stoa::checkVector(n) + " whose only triangle has one uv on all corners gets the tangent " + tangentText(t) +
                 ", expected a finite unit tangent perpendicular to that normal, with w = +1: the fallback must "
                 "work for every normal, also one along the axis it crosses with (docs: The tangent frame)");
     }
@@ -285,9 +279,9 @@ stoa::CheckResult checkTangentsFollowTheUvs() {
             const glm::vec4 t = mesh.vertices[static_cast<std::size_t>(i)].tangent;
             if (!finite(t) || glm::length(glm::vec3(t) - expected) > 1e-3f)
                 return stoa::CheckResult::fail(
-                    "computeTangents() gives a vertex whose normal " + vectorText(n) + " leans out of its triangle "
+                    "computeTangents() gives a vertex whose normal " + stoa::checkVector(n) + " leans out of its triangle "
                     "(u along +X) the tangent " + tangentText(t) + "; without its part along N, made unit, T is " +
-                    vectorText(expected) + " (Gram-Schmidt, step 1 per vertex) (docs: The tangent frame)");
+                    stoa::checkVector(expected) + " (Gram-Schmidt, step 1 per vertex) (docs: The tangent frame)");
         }
     }
     // A vertex shared by a triangle whose v grows along +Y and one whose v grows
