@@ -34,15 +34,15 @@ std::string number(double value, int decimals = 2) {
     return text;
 }
 
-// A slice-like shape: a small quad near the camera at the origin, a large one
-// further along -Z, the order of frustumSliceCorners() (x right when k & 1, y up
-// when k & 2, far when k & 4).
 // Whether a point lies in [-1, 1]^3 (a little slack for rounding); false for NaN,
 // which a degenerate box (near = far) makes.
 bool insideClipCube(const glm::vec3& ndc) {
     return std::abs(ndc.x) <= 1.0001f && std::abs(ndc.y) <= 1.0001f && std::abs(ndc.z) <= 1.0001f;
 }
 
+// A slice-like shape: a small quad near the camera at the origin, a large one
+// further along -Z, the order of frustumSliceCorners() (x right when k & 1, y up
+// when k & 2, far when k & 4).
 std::array<glm::vec3, 8> sliceShape() {
     std::array<glm::vec3, 8> corners;
     for (int k = 0; k < 8; ++k) {
