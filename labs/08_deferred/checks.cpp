@@ -173,6 +173,8 @@ stoa::CheckResult checkReachSolvesTheFalloff() {
                                    "too dim and very large for one that never falls off (7 lights)");
 }
 
+namespace {
+
 // Points on and in each sphere (its four points furthest left, right, down and
 // up first; 200 more for the first `spread` lights): the first whose tile
 // lightTileRange() leaves out, as a failure message. `landed` counts the points
@@ -212,6 +214,8 @@ std::optional<std::string> firstMissedTile(const TileScene& scene, const std::ve
     }
     return std::nullopt;
 }
+
+} // namespace
 
 stoa::CheckResult checkTileRangesHoldTheSphere() {
     const TileScene scene;
