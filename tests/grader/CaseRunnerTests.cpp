@@ -10,6 +10,13 @@
 
 #include <stoa/image/Image.hpp>
 
+#include <atomic>
+#include <chrono>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <thread>
+
 using namespace stoa::grader;
 using stoa::Image;
 
@@ -211,6 +218,61 @@ TEST_CASE("The reference guard removes what appears beside a reference, except t
     CHECK(Image::load(fixture.folder.path() / "reference.png").pixel(8, 0) == gradient(16, 16).pixel(8, 0));
     CHECK(std::filesystem::exists(work / "rendered.png"));
     CHECK(guard.verifyAndRestore().empty());
+}
+
+TEST_CASE("The reference guard blames the case that changed a reference, not the one beside it that ended first",
+          "[grader][case]") {
+    Fixture fixture;
+    const std::filesystem::path reference = fixture.folder.path() / "reference.png";
+    gradient(16, 16).savePng(reference);
+    auto bytesOf = [&] {
+        std::ifstream file(reference, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+    };
+    const std::string original = bytesOf();
+    ReferenceGuard guard({reference}, {});
+    std::atomic<bool> written{false};
+    auto restored = [&] { return bytesOf() == original; };
+    auto waitFor = [](const std::function<bool()>& condition) {
+        for (int i = 0; i < 5000 && !condition(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        return condition();
+    };
+    // The guilty case overwrites the reference and ends only after the innocent
+    // one, which ended first, has found the change (and restored the file).
+    int guiltyRuns = 0, innocentRuns = 0;
+    bool innocentSawTheWrite = false, guiltySawTheRestore = false;
+    std::vector<std::filesystem::path> guilty, innocent;
+    std::thread guiltyCase([&] {
+        guilty = guard.runAndVerify([&] {
+            gradient(16, 16, 128).savePng(reference);
+            if (guiltyRuns++ == 0) {
+                written = true;
+                guiltySawTheRestore = waitFor(restored);
+            }
+        });
+    });
+    std::thread innocentCase([&] {
+        innocent = guard.runAndVerify([&] {
+            if (innocentRuns++ == 0) innocentSawTheWrite = waitFor([&] { return written.load(); });
+        });
+    });
+    guiltyCase.join();
+    innocentCase.join();
+    REQUIRE(innocentSawTheWrite);
+    REQUIRE(guiltySawTheRestore);
+    // Both ran beside a change, so both ran again alone: only the guilty one changed the reference then.
+    CHECK(innocentRuns == 2);
+    CHECK(guiltyRuns == 2);
+    CHECK(innocent.empty());
+    REQUIRE(guilty.size() == 1);
+    CHECK(guilty[0].filename() == "reference.png");
+    CHECK(restored());
+    // A case that runs alone is run once, blamed or not.
+    int runs = 0;
+    CHECK(guard.runAndVerify([&] { ++runs; }).empty());
+    CHECK(guard.runAndVerify([&] { ++runs; gradient(16, 16, 128).savePng(reference); }).size() == 1);
+    CHECK(runs == 2);
+    CHECK(restored());
 }
 
 TEST_CASE("gradeCase: a property check is graded by its exit status and says why", "[grader][case]") {

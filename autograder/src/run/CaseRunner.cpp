@@ -231,20 +231,20 @@ void compareWithReference(const CaseJob& job, const Image& rendered, const Image
 GradeResult gradeCase(const CaseJob& job, const RunSettings& settings, ReferenceGuard* guard) {
     GradeResult result = ungradedResult(job);
 
-    RenderOutcome render = renderCase(job, settings);
+    RenderOutcome render;
+    std::vector<std::filesystem::path> changed;
+    if (guard) changed = guard->runAndVerify([&] { render = renderCase(job, settings); });
+    else render = renderCase(job, settings);
     result.seconds = render.process.seconds;
     result.timedOut = render.process.ending == ProcessEnding::TimedOut;
     result.busyWhenStopped = render.process.busyWhenStopped();
     result.programOutput = render.process.output;
     if (!render.imagePath.empty() && std::filesystem::exists(render.imagePath)) result.renderedImage = render.imagePath;
-    if (guard) {
-        std::vector<std::filesystem::path> changed = guard->verifyAndRestore();
-        if (!changed.empty()) {
-            result.status = GradeStatus::Error;
-            result.reason = "tried to modify the reference images (" + changedList(changed) +
-                            "); they were restored and the case fails";
-            return result;
-        }
+    if (!changed.empty()) {
+        result.status = GradeStatus::Error;
+        result.reason = "tried to modify the reference images (" + changedList(changed) +
+                        "); they were restored and the case fails";
+        return result;
     }
     if (!render.rendered) {
         result.status = render.status;

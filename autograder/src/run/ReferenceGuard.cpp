@@ -139,7 +139,26 @@ std::vector<fs::path> ReferenceGuard::verifyAndRestore() {
         }
     }
     std::sort(changed.begin(), changed.end());
+    if (!changed.empty()) ++m_changesFound;
     return changed;
+}
+
+std::vector<fs::path> ReferenceGuard::runAndVerify(const std::function<void()>& runCase) {
+    {
+        std::shared_lock<std::shared_mutex> beside(m_turns);
+        const std::uint64_t changesBefore = m_changesFound;
+        const std::uint64_t startedBefore = m_casesStarted++;
+        const bool aloneAtStart = ++m_casesRunning == 1;
+        runCase();
+        std::vector<fs::path> changed = verifyAndRestore();
+        const bool alone = aloneAtStart && m_casesStarted == startedBefore + 1;
+        --m_casesRunning;
+        if (m_changesFound == changesBefore || alone) return changed;
+    }
+    std::unique_lock<std::shared_mutex> onlyThisCase(m_turns);
+    ++m_casesStarted;
+    runCase();
+    return verifyAndRestore();
 }
 
 } // namespace stoa::grader

@@ -4,16 +4,22 @@
 // modification time, a hash, and the bytes themselves) and decodes the
 // references once. After each case it checks those files: one that changed or
 // went away is restored from memory, one that appeared is removed, and the case
-// that just ran is blamed. The comparison reads the decoded copy held here, so a
+// that made the change is blamed. Cases run several at a time, so a change found
+// when one ends may be another's: runAndVerify() runs a case again with no other
+// case beside it whenever a change was found while it ran, and blames only what
+// it changes alone. The comparison reads the decoded copy held here, so a
 // reference changed on disk, even by a case running at the same moment, never
 // changes a grade.
 
 #include <stoa/image/Image.hpp>
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
-#include <set>
+#include <functional>
 #include <map>
+#include <set>
+#include <shared_mutex>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -42,6 +48,14 @@ public:
     /// gone (empty when none). Safe to call from several threads at once.
     std::vector<std::filesystem::path> verifyAndRestore();
 
+    /// Runs `runCase` (one case's lab program) beside the other cases, then
+    /// verifyAndRestore(). When a change was found while it ran, by its own check
+    /// or by that of a case beside it, which of them made it is unknown: it waits
+    /// for the others to end and runs `runCase` again alone. Returns the paths the
+    /// case changed (empty when none), so a case is blamed only for its own
+    /// changes; `runCase` has then run once, or twice and the last run stands.
+    std::vector<std::filesystem::path> runAndVerify(const std::function<void()>& runCase);
+
     /// The number of files it guards.
     std::size_t size() const { return m_files.size(); }
 
@@ -67,6 +81,10 @@ private:
     std::set<std::filesystem::path> m_graderEntries;    // entries of the guarded folders on the way to a work folder
     std::map<std::filesystem::path, Decoded> m_decoded;
     std::mutex m_mutex;
+    std::shared_mutex m_turns;                  // shared: a case beside others; unique: a case alone
+    std::atomic<std::uint64_t> m_changesFound{0};   // checks that found a change
+    std::atomic<std::uint64_t> m_casesStarted{0};
+    std::atomic<int> m_casesRunning{0};
 };
 
 /// FNV-1a, 64 bits: enough to notice a changed file (not a defence against collisions;
