@@ -265,6 +265,11 @@ stoa::CheckResult checkCascadeHoldsItsSlice() {
         // box must still hold it, though no occluder can stand there.
         glm::translate(glm::mat4(1.0f), glm::vec3(-4.0f, 60.0f, 6.0f)) *
             glm::rotate(glm::mat4(1.0f), glm::radians(-15.0f), glm::vec3(1.0f, 0.0f, 0.0f)),
+        // Far out along the sun, 150 m from the world's origin: every depth in the
+        // light's view is then far below 0, so a margin made from the depths
+        // themselves rather than from their range turns negative and narrows the box.
+        glm::translate(glm::mat4(1.0f), glm::vec3(150.0f, 2.0f, 150.0f)) *
+            glm::rotate(glm::mat4(1.0f), glm::radians(-120.0f), glm::vec3(0.0f, 1.0f, 0.0f)),
     };
     for (const glm::mat4& camera : cameras) {
         const std::array<glm::vec3, 8> corners = transformed(sliceShape(), camera);
@@ -294,7 +299,8 @@ stoa::CheckResult checkCascadeHoldsItsSlice() {
             }
         }
     }
-    return stoa::CheckResult::pass("the cascade's box holds every corner of three slices (one above the scene), for "
+    return stoa::CheckResult::pass("the cascade's box holds every corner of four slices (one above the scene, one far "
+                                   "from the world's origin), for "
                                    "the sun overhead, at a slant and shining through the corner furthest from the "
                                    "slice's centre");
 }
