@@ -241,6 +241,12 @@ public:
     stoa::CheckResult runCheck(const stoa::CaseSpec& spec) override {
         if (spec.check == "slab_test_table") return lab07::checkSlabTestTable();
         if (spec.check == "bvh_cheapest_split") return lab07::checkBvhCheapestSplit();
+        if (spec.check == "bvh_structure") return lab07::checkBvhStructure();
+        if (spec.check == "closest_point_on_triangle") return lab07::checkClosestPointOnTriangle();
+        if (spec.check == "deep_tree_walks") return lab07::checkDeepTreeWalks();
+        if (spec.check == "fixed_step_bookkeeping") return lab07::checkFixedStepBookkeeping();
+        if (spec.check == "triangle_hits_on_the_edges") return lab07::checkTriangleHitsOnTheEdges();
+        if (spec.check == "ray_starts_on_the_near_plane") return lab07::checkRayStartsOnTheNearPlane();
         return Lab::runCheck(spec);
     }
 
