@@ -372,22 +372,22 @@ stoa::CheckResult checkFixedStepBookkeeping() {
     const stoa::Bvh bvh = stoa::buildBvh(floor);
     stoa::Simulation simulation;
     simulation.ball.position = glm::vec3(0.0f, 2.0f, 0.0f);
-    const float step = simulation.settings.step;
+    const float stepSeconds = simulation.settings.step;
     const float frames[] = {0.0166f, 0.0031f, 0.0502f, 0.0083f, 0.1f, 0.0005f, 0.0211f};
     double framesTime = 0.0;
     for (int i = 0; i < 140; ++i) {
-        const float frame = i < 3 ? step : frames[i % 7];   // three frames of exactly one step first
+        const float frame = i < 3 ? stepSeconds : frames[i % 7];   // three frames of exactly one step first
         stoa::advanceSimulation(simulation, bvh, frame);
         framesTime += frame;
-        const double steps = std::round(simulation.time / step);
+        const double steps = std::round(simulation.time / stepSeconds);
         const std::string after = "after " + std::to_string(i + 1) + " frames (" + stoa::checkNumber(framesTime, 4) +
-                                  " s, steps of " + stoa::checkNumber(step, 5) + " s)";
-        if (!(simulation.accumulator >= 0.0f && simulation.accumulator < step))
+                                  " s, steps of " + stoa::checkNumber(stepSeconds, 5) + " s)";
+        if (!(simulation.accumulator >= 0.0f && simulation.accumulator < stepSeconds))
             return stoa::CheckResult::fail("advanceSimulation(): " + after + " the accumulator holds " +
                                            stoa::checkNumber(simulation.accumulator, 5) +
                                            " s; it must keep less than one step, 0 included: run steps while it "
                                            "holds a whole one (docs: A fixed time step)");
-        if (!(std::fabs(simulation.time - steps * step) <= 0.1 * step) ||
+        if (!(std::fabs(simulation.time - steps * stepSeconds) <= 0.1 * stepSeconds) ||
             !(std::fabs(simulation.time + simulation.accumulator - framesTime) <= 1e-3))
             return stoa::CheckResult::fail("advanceSimulation(): " + after + " simulation.time is " +
                                            stoa::checkNumber(simulation.time, 5) + " s and the accumulator " +
