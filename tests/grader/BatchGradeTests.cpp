@@ -206,7 +206,12 @@ TEST_CASE("compareExactly counts differing pixels and the largest difference") {
     CHECK(difference.maxChannelDifference == 2);
     CHECK(difference.describe() == "2 pixels differ, by at most 2 levels");
     CHECK_FALSE(compareExactly(a, Image(3, 4, 4)).sameSize);
-    CHECK(determinismVariants().size() == 4);
+    CHECK(determinismVariants(4).size() == 4);
+    CHECK(determinismVariants(4).back().environment == std::vector<std::string>{"LP_NUM_THREADS=2"});
+    CHECK(determinismVariants(0).size() == 4);
+    // Two threads are llvmpipe's default on a 2-core machine: LP_NUM_THREADS=2 would repeat runs 1 and 2.
+    REQUIRE(determinismVariants(2).size() == 3);
+    CHECK(determinismVariants(2)[2].environment == std::vector<std::string>{"LP_NUM_THREADS=1"});
 }
 
 TEST_CASE("The determinism check (--determinism) is its own mode and combines with --lab and --case only") {

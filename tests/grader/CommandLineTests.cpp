@@ -93,6 +93,11 @@ TEST_CASE("parseCommandLine: bad usage names the argument and the choices", "[gr
     CHECK(usageError({"--update-references", "--expect", "pass"}).find("--expect only applies") == 0);
     CHECK(usageError({"--check-mistakes", "--json", "r.json"}).find("--json only applies") == 0);
     CHECK(usageError({"--check-mistakes", "--case", "a"}).find("drop --case") != std::string::npos);
+    CHECK(usageError({"--every-case"}).find("--every-case only applies to --check-mistakes") == 0);
+    CHECK(usageError({"--check-hints", "dir", "--every-case"}).find("--check-hints grades every case") !=
+          std::string::npos);
+    CHECK(parseCommandLine({"--check-mistakes", "--every-case"}).everyCase);
+    CHECK_FALSE(parseCommandLine({"--check-mistakes"}).everyCase);
 }
 
 TEST_CASE("the options html and junit name report files, for grading only", "[grader][cli][report]") {

@@ -80,6 +80,7 @@ const std::vector<OptionSpec>& optionTable() {
          }},
         {"--update-references", nullptr, [](Options&, ModeFlags& m, const std::string&) { m.updateReferences = true; }},
         {"--check-mistakes", nullptr, [](Options&, ModeFlags& m, const std::string&) { m.checkMistakes = true; }},
+        {"--every-case", nullptr, [](Options& o, ModeFlags&, const std::string&) { o.everyCase = true; }},
         {"--check-hints", "a folder of mistakes outside the gallery (<lab>/mistakes/*.mistake)",
          [](Options& o, ModeFlags& m, const std::string& v) {
              o.outOfGalleryDir = v;
@@ -140,6 +141,8 @@ void chooseMode(Options& options, const ModeFlags& modes) {
         for (const auto& [given, name] : gradingOnly)
             if (given) throw UsageError(std::string(name) + " only applies to grading, not to " + modeName);
     }
+    if (options.everyCase && (!modes.checkMistakes || !options.outOfGalleryDir.empty()))
+        throw UsageError("--every-case only applies to --check-mistakes (--check-hints grades every case already)");
     if (modes.checkMistakes && !options.cases.empty())
         throw UsageError("--check-mistakes checks the cases each mistake names in 'fails:'; drop --case");
 }
@@ -181,7 +184,10 @@ std::string usageText() {
 usage:
   stoa-grade [--lab NN_name|NN]... [--case NAME]... [options]   grade (every built lab by default)
   stoa-grade --update-references [--lab ...] [--case ...]       write reference images (solutions build)
-  stoa-grade --check-mistakes [--lab ...]                       check that each planted mistake is caught
+  stoa-grade --check-mistakes [--lab ...] [--every-case]        check that each planted mistake is caught: it
+                                                                fails the cases its fails: line names (graded
+                                                                alone; --every-case grades the rest too and
+                                                                names the other cases it fails)
   stoa-grade --check-hints DIR [--lab ...]                      check that mistakes outside the gallery (DIR/<lab>/mistakes/)
                                                                 get no hint naming another cause
   stoa-grade --write-heatmap-legend FILE                        write the heat map's colour legend as a PNG

@@ -8,6 +8,8 @@
 #include <map>
 #include <sstream>
 
+#include <unistd.h>
+
 namespace stoa::grader {
 
 std::string ImageDifference::describe() const {
@@ -39,9 +41,16 @@ ImageDifference compareExactly(const Image& a, const Image& b) {
     return difference;
 }
 
-std::vector<DeterminismVariant> determinismVariants() {
-    return {{"run 1", {}}, {"run 2", {}}, {"LP_NUM_THREADS=1", {"LP_NUM_THREADS=1"}},
-            {"LP_NUM_THREADS=2", {"LP_NUM_THREADS=2"}}};
+std::vector<DeterminismVariant> determinismVariants(int defaultThreads) {
+    std::vector<DeterminismVariant> variants = {{"run 1", {}}, {"run 2", {}}, {"LP_NUM_THREADS=1", {"LP_NUM_THREADS=1"}}};
+    if (defaultThreads != 2) variants.push_back({"LP_NUM_THREADS=2", {"LP_NUM_THREADS=2"}});
+    return variants;
+}
+
+int llvmpipeDefaultThreads() {
+    if (const char* value = std::getenv("LP_NUM_THREADS"); value && *value) return std::atoi(value);
+    const long online = sysconf(_SC_NPROCESSORS_ONLN);
+    return online > 1 ? static_cast<int>(online) : 0;   // llvmpipe renders on the calling thread on one CPU
 }
 
 namespace {
@@ -109,7 +118,8 @@ int runDeterminismCheck(const Options& options, const Environment& env) {
     std::vector<PlannedLab> labs = planLabs(options, env, true);
     if (noProgramToRun(labs, env, "build the labs first (cmake --build build) or point --bin-dir at them")) return 1;
     GradingRun run(options, env);
-    const std::vector<DeterminismVariant> variants = determinismVariants();
+    const int defaultThreads = llvmpipeDefaultThreads();
+    const std::vector<DeterminismVariant> variants = determinismVariants(defaultThreads);
     const std::vector<CaseOutcome> renders = run.render(planVariants(labs, env, run.workDir(), variants));
 
     std::map<Verdict, int> counts;
@@ -125,6 +135,7 @@ int runDeterminismCheck(const Options& options, const Environment& env) {
             << " differing, " << counts[Verdict::Failed] << " failed to render, " << counts[Verdict::Skipped]
             << " not attempted (renders: ";
     for (std::size_t v = 0; v < variants.size(); ++v) env.out << (v ? ", " : "") << variants[v].name;
+    if (defaultThreads == 2) env.out << "; runs 1 and 2 are LP_NUM_THREADS=2, llvmpipe's default here";
     env.out << ")\n";
     const bool trouble = counts[Verdict::Differs] + counts[Verdict::Failed] > 0;
     run.finish(trouble, "rendered images", "/<lab>/<case>/variant-N/");

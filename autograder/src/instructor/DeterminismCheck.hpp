@@ -37,8 +37,14 @@ struct DeterminismVariant {
     std::vector<std::string> environment;
 };
 
-/// The four renders: run 1, run 2, LP_NUM_THREADS=1, LP_NUM_THREADS=2.
-std::vector<DeterminismVariant> determinismVariants();
+/// The renders: run 1, run 2 (llvmpipe's default threads, `defaultThreads`),
+/// LP_NUM_THREADS=1 and LP_NUM_THREADS=2; the last is left out where the default
+/// is 2 threads already (a 2-core machine), as it would repeat runs 1 and 2.
+std::vector<DeterminismVariant> determinismVariants(int defaultThreads);
+
+/// The threads llvmpipe renders with when the lab program's environment does not
+/// say: $LP_NUM_THREADS, else one per online CPU (0, the calling thread, on one CPU).
+int llvmpipeDefaultThreads();
 
 /// Runs the check for the labs and cases `options` selects; prints one line per
 /// case and a summary. Returns 0 when every rendered case is identical in every

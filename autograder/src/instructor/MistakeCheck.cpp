@@ -133,8 +133,40 @@ struct MistakeSource {
 struct MistakePlan {
     std::vector<MistakeRun> runs;
     std::vector<CaseOutcome> outcomes;    // every run's cases; a run's are [firstJob, firstJob + jobCount)
+    std::vector<bool> toGrade;            // per outcome: graded, or known to pass (see casesToGrade())
     std::vector<std::string> notBuilt;    // notes for the mistakes whose program is not built
 };
+
+// The cases a gallery mistake must be graded on: those its fails: line names and
+// those its gallery entry (written by --update-references, which grades every case)
+// records it failing. Every other case passed when the gallery was written, and is
+// taken as passed without rendering it: the verdict and the hints are those of a
+// run of every case, because a hint depends on the other cases only through which
+// of them fail. Empty when every case is to be graded (--every-case, --check-hints).
+std::vector<std::string> casesToGrade(const MistakeFile& mistake, const std::vector<CaseJob>& jobs) {
+    std::vector<std::string> names = mistake.fails;
+    if (jobs.empty()) return names;
+    try {
+        for (const KnownMistake& known : loadGallery(jobs.front().reference.parent_path()))
+            if (known.name == mistake.name) names.insert(names.end(), known.fails.begin(), known.fails.end());
+    } catch (const std::exception&) {
+        return {};   // a gallery that does not read: grade every case
+    }
+    return names;
+}
+
+// A case of a mistake's lab left out by casesToGrade(): passed, as the gallery records.
+GradeResult assumedPassed(const CaseJob& job) {
+    GradeResult result;
+    result.lab = job.lab;
+    result.caseName = job.spec.name;
+    result.status = GradeStatus::Passed;
+    result.reason = "not rendered: passed when the gallery was written (--every-case renders it)";
+    result.maxPoints = result.points = job.spec.points;
+    result.visibility = job.spec.visibility;
+    result.propertyCheck = !job.spec.check.empty();
+    return result;
+}
 
 // The "fails: names a case the manifest does not have" problems of a mistake.
 std::string manifestProblemOf(const MistakeFile& mistake, const PlannedLab& lab) {
@@ -147,7 +179,7 @@ std::string manifestProblemOf(const MistakeFile& mistake, const PlannedLab& lab)
 }
 
 MistakePlan planMistakes(const std::vector<PlannedLab>& labs, const MistakeSource& source, const Environment& env,
-                         const std::filesystem::path& workDir) {
+                         const std::filesystem::path& workDir, bool everyCase) {
     MistakePlan plan;
     for (const PlannedLab& lab : labs) {
         for (MistakeFile& mistake : loadMistakes(source.mistakesRoot / lab.lab)) {
@@ -166,10 +198,16 @@ MistakePlan planMistakes(const std::vector<PlannedLab>& labs, const MistakeSourc
                 jobs.erase(std::remove_if(jobs.begin(), jobs.end(),
                                           [](const CaseJob& job) { return job.spec.visibility == Visibility::Hidden; }),
                            jobs.end());
+            const std::vector<std::string> graded =
+                source.outOfGallery || everyCase ? std::vector<std::string>{} : casesToGrade(mistake, jobs);
             run.firstJob = plan.outcomes.size();
             run.jobCount = jobs.size();
-            for (CaseOutcome& outcome : plannedOutcomes(std::move(jobs), "mistake " + mistake.name))
+            for (CaseOutcome& outcome : plannedOutcomes(std::move(jobs), "mistake " + mistake.name)) {
+                plan.toGrade.push_back(graded.empty() ||
+                                       std::find(graded.begin(), graded.end(), outcome.job.spec.name) != graded.end());
+                if (!plan.toGrade.back()) outcome.result = assumedPassed(outcome.job);
                 plan.outcomes.push_back(std::move(outcome));
+            }
             run.mistake = std::move(mistake);
             plan.runs.push_back(std::move(run));
         }
@@ -236,7 +274,7 @@ int runCheckMistakes(const Options& options, const Environment& env) {
     }
 
     GradingRun run(options, env);
-    MistakePlan plan = planMistakes(labs, source, env, run.workDir());
+    MistakePlan plan = planMistakes(labs, source, env, run.workDir(), options.everyCase);
     if (plan.runs.empty()) {
         run.finish(false);
         explainNothingToCheck(plan, source, env);
@@ -244,7 +282,13 @@ int runCheckMistakes(const Options& options, const Environment& env) {
     }
     for (const std::string& note : plan.notBuilt) env.err << note << "\n";
 
-    std::vector<CaseOutcome> outcomes = run.grade(plan.outcomes);
+    // Grade the cases to grade; the others keep their assumed results, in their places.
+    std::vector<CaseOutcome> toGrade, outcomes = plan.outcomes;
+    for (std::size_t i = 0; i < outcomes.size(); ++i)
+        if (plan.toGrade[i]) toGrade.push_back(outcomes[i]);
+    std::vector<CaseOutcome> graded = run.grade(std::move(toGrade));
+    for (std::size_t i = 0, k = 0; i < outcomes.size(); ++i)
+        if (plan.toGrade[i]) outcomes[i] = std::move(graded[k++]);
     run.addHints(outcomes);
     const int caught = printVerdicts(plan, outcomes, source, env.out);
     const bool allCaught = caught == static_cast<int>(plan.runs.size());

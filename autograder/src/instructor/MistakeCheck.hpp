@@ -4,7 +4,10 @@
 // line names -- fail as "failed", a wrong image, not as an error or "not
 // attempted" -- and on at least one of them the known-mistake hint (from the
 // gallery, see Hints.hpp) must name that very mistake. Prints one row per
-// mistake; exit 1 if any is not caught.
+// mistake; exit 1 if any is not caught. Each mistake renders only the cases its
+// fails: line names and those its gallery entry records it failing; the others
+// count as passed, as they did when the gallery was written (--every-case renders
+// them too and names any other case it fails).
 
 #include "GradeOptions.hpp"
 #include "GradeResult.hpp"
