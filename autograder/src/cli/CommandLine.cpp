@@ -141,8 +141,8 @@ void chooseMode(Options& options, const ModeFlags& modes) {
         for (const auto& [given, name] : gradingOnly)
             if (given) throw UsageError(std::string(name) + " only applies to grading, not to " + modeName);
     }
-    if (options.everyCase && (!modes.checkMistakes || !options.outOfGalleryDir.empty()))
-        throw UsageError("--every-case only applies to --check-mistakes (--check-hints grades every case already)");
+    if (options.everyCase && !modes.checkMistakes)
+        throw UsageError("--every-case only applies to --check-mistakes and --check-hints");
     if (modes.checkMistakes && !options.cases.empty())
         throw UsageError("--check-mistakes checks the cases each mistake names in 'fails:'; drop --case");
 }
@@ -188,8 +188,9 @@ usage:
                                                                 fails the cases its fails: line names (graded
                                                                 alone; --every-case grades the rest too and
                                                                 names the other cases it fails)
-  stoa-grade --check-hints DIR [--lab ...]                      check that mistakes outside the gallery (DIR/<lab>/mistakes/)
-                                                                get no hint naming another cause
+  stoa-grade --check-hints DIR [--lab ...] [--every-case]       check that mistakes outside the gallery (DIR/<lab>/mistakes/)
+                                                                get no hint naming another cause (the same
+                                                                cases as --check-mistakes)
   stoa-grade --write-heatmap-legend FILE                        write the heat map's colour legend as a PNG
   stoa-grade --determinism [--lab ...] [--case ...]             render each case twice and with LP_NUM_THREADS=1
                                                                 and 2; exit 1 on any difference

@@ -46,8 +46,19 @@ std::vector<std::string> notFailedAsListed(const MistakeFile& mistake, const std
 
 } // namespace
 
+// The failed cases that the mistake's fails: line does not name.
+std::vector<std::string> alsoFailed(const MistakeFile& mistake, const std::vector<GradeResult>& results) {
+    std::vector<std::string> names;
+    for (const GradeResult& result : results)
+        if (result.status == GradeStatus::Failed &&
+            std::find(mistake.fails.begin(), mistake.fails.end(), result.caseName) == mistake.fails.end())
+            names.push_back(result.caseName);
+    return names;
+}
+
 MistakeVerdict judgeOutOfGallery(const MistakeFile& mistake, const std::vector<GradeResult>& results) {
     std::vector<std::string> problems = notFailedAsListed(mistake, results), wrong, right;
+    const std::vector<std::string> alsoFails = alsoFailed(mistake, results);
     for (const GradeResult& result : results) {
         if (!result.hasHint()) continue;
         // Right only where the entry's hint lists this cause: hint-ok says so, and the
@@ -71,16 +82,13 @@ MistakeVerdict judgeOutOfGallery(const MistakeFile& mistake, const std::vector<G
         for (std::size_t i = 0; i < problems.size(); ++i) text += (i ? "; " : "") + problems[i];
         verdict.detail += "; NOT as its fails: line says: " + text;
     }
+    if (!alsoFails.empty()) verdict.detail += " (also fails " + joined(alsoFails) + ")";
     return verdict;
 }
 
 MistakeVerdict judgeMistake(const MistakeFile& mistake, const std::vector<GradeResult>& results) {
     std::vector<std::string> problems = notFailedAsListed(mistake, results);
-    std::vector<std::string> alsoFails;
-    for (const GradeResult& result : results)
-        if (result.status == GradeStatus::Failed &&
-            std::find(mistake.fails.begin(), mistake.fails.end(), result.caseName) == mistake.fails.end())
-            alsoFails.push_back(result.caseName);
+    const std::vector<std::string> alsoFails = alsoFailed(mistake, results);
 
     // The hint must name the mistake on at least one case it fails: that is what
     // a student with this bug would read.
@@ -142,10 +150,11 @@ struct MistakePlan {
 // records it failing. Every other case passed when the gallery was written, and is
 // taken as passed without rendering it: the verdict and the hints are those of a
 // run of every case, because a hint depends on the other cases only through which
-// of them fail. Empty when every case is to be graded (--every-case, --check-hints).
-std::vector<std::string> casesToGrade(const MistakeFile& mistake, const std::vector<CaseJob>& jobs) {
+// of them fail. Empty when every case is to be graded (--every-case).
+std::vector<std::string> casesToGrade(const MistakeFile& mistake, const std::vector<CaseJob>& jobs,
+                                      bool outOfGallery) {
     std::vector<std::string> names = mistake.fails;
-    if (jobs.empty()) return names;
+    if (jobs.empty() || outOfGallery) return names;   // a mistake outside the gallery has no entry there
     try {
         for (const KnownMistake& known : loadGallery(jobs.front().reference.parent_path()))
             if (known.name == mistake.name) names.insert(names.end(), known.fails.begin(), known.fails.end());
@@ -199,7 +208,7 @@ MistakePlan planMistakes(const std::vector<PlannedLab>& labs, const MistakeSourc
                                           [](const CaseJob& job) { return job.spec.visibility == Visibility::Hidden; }),
                            jobs.end());
             const std::vector<std::string> graded =
-                source.outOfGallery || everyCase ? std::vector<std::string>{} : casesToGrade(mistake, jobs);
+                everyCase ? std::vector<std::string>{} : casesToGrade(mistake, jobs, source.outOfGallery);
             run.firstJob = plan.outcomes.size();
             run.jobCount = jobs.size();
             for (CaseOutcome& outcome : plannedOutcomes(std::move(jobs), "mistake " + mistake.name)) {

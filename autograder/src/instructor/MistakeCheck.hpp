@@ -7,7 +7,8 @@
 // mistake; exit 1 if any is not caught. Each mistake renders only the cases its
 // fails: line names and those its gallery entry records it failing; the others
 // count as passed, as they did when the gallery was written (--every-case renders
-// them too and names any other case it fails).
+// them too and names any other case it fails). `--check-hints` likewise renders
+// the cases of each fails: line.
 
 #include "GradeOptions.hpp"
 #include "GradeResult.hpp"

@@ -36,8 +36,8 @@ struct Options {
     std::filesystem::path shaderCache;        // --shader-cache: Mesa's cache for the lab programs; empty = the user's
     std::vector<std::filesystem::path> privateDirs;   // --private: kept from the lab programs (a class's submissions, grades)
     std::optional<GradeStatus> expect;        // Passed or NotAttempted: exit 1 unless every case has it
-    bool everyCase = false;                   // --every-case: --check-mistakes grades every case of a
-                                              // mistake's lab, not only those its fails: line names
+    bool everyCase = false;                   // --every-case: --check-mistakes (--check-hints) grades every
+                                              // case of a mistake's lab, not only those its fails: line names
     std::filesystem::path outOfGalleryDir;    // --check-hints DIR: mistakes outside the gallery
                                               // (DIR/<lab>/mistakes/*.mistake), mode CheckMistakes
     std::filesystem::path heatMapLegend;      // --write-heatmap-legend FILE: mode HeatMapLegend
