@@ -253,12 +253,20 @@ def main():
         page.call("Page.navigate", url=args.url)
         deadline = time.time() + args.timeout
         connected = drawn = False
+        last_error = None
         while time.time() < deadline and not drawn:
             time.sleep(0.25)
-            connected = bool(page.evaluate("document.documentElement.classList.contains('noVNC_connected')"))
-            drawn = connected and bool(page.evaluate(WINDOW_DRAWN % {"w": 64, "h": 64}))
+            # While the page is still loading, a script may find no document or no canvas
+            # yet and throw (a loaded machine showed it): that is "not yet", not a failure.
+            try:
+                connected = bool(page.evaluate("document.documentElement.classList.contains('noVNC_connected')"))
+                drawn = connected and bool(page.evaluate(WINDOW_DRAWN % {"w": 64, "h": 64}))
+            except RuntimeError as error:
+                last_error = error
+                connected = drawn = False
         if not connected:
-            print(f"FAIL: noVNC did not connect within {args.timeout:.0f} s", file=sys.stderr)
+            print(f"FAIL: noVNC did not connect within {args.timeout:.0f} s"
+                  + (f" (the page's last script error: {last_error})" if last_error else ""), file=sys.stderr)
             return 1
         if not drawn:
             print(f"FAIL: noVNC connected, but no window showed at the screen's top left within {args.timeout:.0f} s",
