@@ -44,8 +44,6 @@ std::vector<std::string> notFailedAsListed(const MistakeFile& mistake, const std
     return problems;
 }
 
-} // namespace
-
 // The failed cases that the mistake's fails: line does not name.
 std::vector<std::string> alsoFailed(const MistakeFile& mistake, const std::vector<GradeResult>& results) {
     std::vector<std::string> names;
@@ -55,6 +53,8 @@ std::vector<std::string> alsoFailed(const MistakeFile& mistake, const std::vecto
             names.push_back(result.caseName);
     return names;
 }
+
+} // namespace
 
 MistakeVerdict judgeOutOfGallery(const MistakeFile& mistake, const std::vector<GradeResult>& results) {
     std::vector<std::string> problems = notFailedAsListed(mistake, results), wrong, right;
