@@ -19,8 +19,9 @@
 #   3. no page or comment a student reads points at a file the release leaves out
 #      (autograder/check-release-paths.py);
 #   4. the release configures and builds from a clean folder, as a student's would
-#      (RelWithDebInfo; --cmake-args adds configure arguments after it, as the tests'
-#      -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0, which builds in half the time);
+#      (RelWithDebInfo; --cmake-args adds configure arguments after it, as e2e.student_release's
+#      "-DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE=-O0 -DCMAKE_C_FLAGS_RELEASE=-O0",
+#      which builds without optimization or debug info);
 #   5. its stoa-grade reports every case "not attempted" (--expect not-attempted).
 # Exit status 0 when the release is made and verified, 1 otherwise, 2 on bad usage.
 set -euo pipefail
