@@ -34,7 +34,7 @@ while [ $# -gt 0 ]; do
     --no-verify) verify=0; shift ;;
     --cmake-args) [ $# -ge 2 ] || usage; read -r -a cmake_args <<< "$2"; shift 2 ;;
     --classroom) classroom=1; shift ;;
-    -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "make-release: unknown option $1" >&2; usage ;;
     *) [ -z "$out" ] || usage; out=$1; shift ;;
   esac
