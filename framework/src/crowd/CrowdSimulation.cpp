@@ -281,6 +281,10 @@ void CrowdSimulation::rebuildAgentGrid() {
     m_living.resize(m_agents.size());
     // A counting sort: each cell's count at its own index first ...
     for (std::size_t i = 0; i < m_agents.size(); ++i) {
+        // What was sent in the step that ended is heard in the next: passed on
+        // here, in the pass that reads every agent anyway, not in one of its own.
+        m_agents[i].messages = m_agents[i].nextMessages;
+        m_agents[i].nextMessages = 0;
         m_living[i] = m_agents[i].alive ? 1 : 0;
         m_cellOf[i] = -1;
         if (!m_agents[i].alive) continue;
@@ -341,13 +345,11 @@ void CrowdSimulation::rebuildAgentGrid() {
 void CrowdSimulation::stepTheDead() {
     const float dt = m_world.step;
     m_stepKills.clear();
-    // What was sent last step is heard now; the dead first, in index order (a
-    // comeback waits for the next step to act). One pass: neither reads the other.
+    // The dead first, in index order (a comeback waits for the next step to
+    // act), found by the packed flags: the living's lines are not read here.
     for (std::size_t i = 0; i < m_agents.size(); ++i) {
+        if (m_living[i]) continue;
         CrowdAgent& agent = m_agents[i];
-        agent.messages = agent.nextMessages;
-        agent.nextMessages = 0;
-        if (agent.alive) continue;
         agent.deadFor += dt;
         if (agent.deadFor < respawnSeconds) continue;
         const SpawnArea& area = m_world.spawns[static_cast<std::size_t>(agent.spawn)];
