@@ -60,6 +60,9 @@ void main() {
     vec3 positionWorld = (uInverseView * vec4(surface.position, 1.0)).xyz;
     vec3 normalWorld = normalize(mat3(uInverseView) * surface.normal);
     int cascade = cascadeIndex(surface.position, uCascadeSplits, uCascadeCount);
+    // Past the last slice cascadeShadow() is handed MAX_CASCADES, its "no map
+    // covers it", whatever the count: with fewer cascades the next matrix is unset.
+    if (cascade >= uCascadeCount) cascade = MAX_CASCADES;
     float s = 1.0;
     if (uShadowsEnabled)
         s = cascadeShadow(uCascadeMatrices, uCascadeBiases, cascade, positionWorld,

@@ -55,6 +55,9 @@ void main() {
 
     vec3 positionView = (uView * vec4(vPositionWorld, 1.0)).xyz;
     int cascade = cascadeIndex(positionView, uCascadeSplits, uCascadeCount);
+    // Past the last slice cascadeShadow() is handed MAX_CASCADES, its "no map
+    // covers it", whatever the count: with fewer cascades the next matrix is unset.
+    if (cascade >= uCascadeCount) cascade = MAX_CASCADES;
     float s = 1.0;
     if (uShadowsEnabled)
         s = cascadeShadow(uCascadeMatrices, uCascadeBiases, cascade, vPositionWorld, dot(N, L), uPcfMode);

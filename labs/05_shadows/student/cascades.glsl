@@ -22,7 +22,8 @@ int cascadeIndex(vec3 positionView, vec4 splitFar, int cascadeCount) {
 // s in [0, 1] for a point at `positionWorld` in cascade `cascade`: its map's
 // coordinates through that cascade's matrix, that cascade's slope-scaled bias
 // (each map's texels cover a different size, so each has its own bias), and the
-// filtered depth test on that cascade's map. 1.0 beyond the last cascade.
+// filtered depth test on that cascade's map. 1.0 beyond the last cascade (the
+// shader passes cascade = MAX_CASCADES there, whatever the count).
 float cascadeShadow(mat4 cascadeMatrices[MAX_CASCADES], vec3 cascadeBiases[MAX_CASCADES], int cascade,
                     vec3 positionWorld, float cosTheta, int pcfMode) {
     // TODO(lab05): your shadowMapCoordinates() and slopeScaledBias() with this
