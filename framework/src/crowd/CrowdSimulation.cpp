@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -273,28 +274,51 @@ void CrowdSimulation::rebuildAgentGrid() {
     const std::size_t cells = static_cast<std::size_t>(m_cellsX) * m_cellsZ;
     const std::size_t typeCells = static_cast<std::size_t>(m_typeCellsX) * m_typeCellsZ;
     const std::size_t types = std::max<std::size_t>(1, m_world.types.size());
-    m_cellStart.assign(cells + 1, 0);
-    m_typeCellStart.assign(types * typeCells + 1, 0);
-    m_cellOf.resize(m_agents.size());
-    m_typeCellOf.resize(m_agents.size());
-    m_places.assign(m_agents.size(), -1);
-    m_living.resize(m_agents.size());
+    const std::size_t agentCount = m_agents.size();
+    // Zeroed by memset (assign() fills an int at a time).
+    const auto zeroed = [](std::vector<int>& starts, std::size_t size) {
+        starts.resize(size);
+        std::memset(starts.data(), 0, size * sizeof(int));
+    };
+    zeroed(m_cellStart, cells + 1);
+    zeroed(m_typeCellStart, types * typeCells + 1);
+    m_cellOf.resize(agentCount);
+    m_typeCellOf.resize(agentCount);
+    m_places.resize(agentCount);
+    m_living.resize(agentCount);
+    // The arrays through local pointers: a store to m_living (bytes, which may
+    // alias anything) would otherwise make every member be loaded again.
+    CrowdAgent* const agents = m_agents.data();
+    std::uint8_t* const living = m_living.data();
+    int* const cellOf = m_cellOf.data();
+    int* const typeCellOf = m_typeCellOf.data();
+    int* const places = m_places.data();
+    int* const cellCount = m_cellStart.data();
+    int* const typeCellCount = m_typeCellStart.data();
+    const float cellSize = m_cellSize;
+    const int cellsX = m_cellsX, cellsZ = m_cellsZ, typeCellsX = m_typeCellsX;
     // A counting sort: each cell's count at its own index first ...
-    for (std::size_t i = 0; i < m_agents.size(); ++i) {
+    for (std::size_t i = 0; i < agentCount; ++i) {
+        CrowdAgent& agent = agents[i];
         // What was sent in the step that ended is heard in the next: passed on
         // here, in the pass that reads every agent anyway, not in one of its own.
-        m_agents[i].messages = m_agents[i].nextMessages;
-        m_agents[i].nextMessages = 0;
-        m_living[i] = m_agents[i].alive ? 1 : 0;
-        m_cellOf[i] = -1;
-        if (!m_agents[i].alive) continue;
-        const glm::vec2 p = (m_agents[i].position - origin) / m_cellSize;
-        const int cx = cellIndex(p.x, m_cellsX), cz = cellIndex(p.y, m_cellsZ);
-        m_cellOf[i] = cz * m_cellsX + cx;
-        m_typeCellOf[i] = m_agents[i].type * static_cast<int>(typeCells) + (cz >> kTypeCellShift) * m_typeCellsX +
-                          (cx >> kTypeCellShift);
-        ++m_cellStart[static_cast<std::size_t>(m_cellOf[i])];
-        ++m_typeCellStart[static_cast<std::size_t>(m_typeCellOf[i])];
+        agent.messages = agent.nextMessages;
+        agent.nextMessages = 0;
+        living[i] = agent.alive ? 1 : 0;
+        if (!agent.alive) {
+            cellOf[i] = -1;
+            places[i] = -1;
+            continue;
+        }
+        const glm::vec2 p = (agent.position - origin) / cellSize;
+        const int cx = cellIndex(p.x, cellsX), cz = cellIndex(p.y, cellsZ);
+        const int cell = cz * cellsX + cx;
+        const int typeCell = agent.type * static_cast<int>(typeCells) + (cz >> kTypeCellShift) * typeCellsX +
+                             (cx >> kTypeCellShift);
+        cellOf[i] = cell;
+        typeCellOf[i] = typeCell;
+        ++cellCount[static_cast<std::size_t>(cell)];
+        ++typeCellCount[static_cast<std::size_t>(typeCell)];
     }
     // ... then counts to ends, the running sum in a register (not read back
     // from the array it was just stored to, a wait of several cycles per cell) ...
@@ -326,19 +350,21 @@ void CrowdSimulation::rebuildAgentGrid() {
     // ... and filled from each cell's end back, in falling index order: each
     // end comes down to its cell's start, and within a cell the agents stand
     // by index, the order in which the step visits them.
-    for (std::size_t i = m_agents.size(); i-- > 0;) {
-        if (m_cellOf[i] < 0) continue;
-        const auto cell = static_cast<std::size_t>(m_cellOf[i]);
-        const CrowdAgent& agent = m_agents[i];
+    GridEntry* const cellAgents = m_cellAgents.data();
+    GridEntry* const typeCellAgents = m_typeCellAgents.data();
+    for (std::size_t i = agentCount; i-- > 0;) {
+        if (cellOf[i] < 0) continue;
+        const CrowdAgent& agent = agents[i];
         // Field by field: an entry built whole and then copied waits on its own stores.
         const auto fill = [&](GridEntry& entry) {
             entry.position = agent.position;
             entry.heading = agent.heading;
             entry.agent = static_cast<int>(i);
         };
-        m_places[i] = --m_cellStart[cell];
-        fill(m_cellAgents[static_cast<std::size_t>(m_places[i])]);
-        fill(m_typeCellAgents[static_cast<std::size_t>(--m_typeCellStart[static_cast<std::size_t>(m_typeCellOf[i])])]);
+        const int place = --cellCount[static_cast<std::size_t>(cellOf[i])];
+        places[i] = place;
+        fill(cellAgents[static_cast<std::size_t>(place)]);
+        fill(typeCellAgents[static_cast<std::size_t>(--typeCellCount[static_cast<std::size_t>(typeCellOf[i])])]);
     }
 }
 
