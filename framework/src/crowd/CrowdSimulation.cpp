@@ -26,6 +26,37 @@ std::string metres(float value) {
     return text;
 }
 
+/// Each cell's count to the end of its run of entries: the running sum in a
+/// register (not read back from the array it was just stored to, a wait of
+/// several cycles per cell).
+void countsToEnds(std::vector<int>& starts) {
+    int* count = starts.data();
+    const std::size_t cellCount = starts.size() - 1;
+    std::size_t c = 0;
+    int sum = 0;
+#if defined(__SSE2__)
+    // Four cells at a time: each lane adds the lanes before it, then the sum so far.
+    __m128i before = _mm_setzero_si128();
+    for (; c + 4 <= cellCount; c += 4) {
+        __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(count + c));
+        x = _mm_add_epi32(x, _mm_slli_si128(x, 4));
+        x = _mm_add_epi32(x, _mm_slli_si128(x, 8));
+        x = _mm_add_epi32(x, before);
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(count + c), x);
+        before = _mm_shuffle_epi32(x, _MM_SHUFFLE(3, 3, 3, 3));
+    }
+    sum = _mm_cvtsi128_si32(before);
+#endif
+    for (; c < cellCount; ++c) count[c] = sum += count[c];
+    count[cellCount] = sum;
+}
+
+/// `starts` as `size` zeros, by memset (assign() fills an int at a time).
+void zeroed(std::vector<int>& starts, std::size_t size) {
+    starts.resize(size);
+    std::memset(starts.data(), 0, size * sizeof(int));
+}
+
 } // namespace
 
 CrowdSimulation::~CrowdSimulation() = default;
@@ -275,11 +306,6 @@ void CrowdSimulation::rebuildAgentGrid() {
     const std::size_t typeCells = static_cast<std::size_t>(m_typeCellsX) * m_typeCellsZ;
     const std::size_t types = std::max<std::size_t>(1, m_world.types.size());
     const std::size_t agentCount = m_agents.size();
-    // Zeroed by memset (assign() fills an int at a time).
-    const auto zeroed = [](std::vector<int>& starts, std::size_t size) {
-        starts.resize(size);
-        std::memset(starts.data(), 0, size * sizeof(int));
-    };
     zeroed(m_cellStart, cells + 1);
     zeroed(m_typeCellStart, types * typeCells + 1);
     m_cellOf.resize(agentCount);
@@ -320,31 +346,9 @@ void CrowdSimulation::rebuildAgentGrid() {
         ++cellCount[static_cast<std::size_t>(cell)];
         ++typeCellCount[static_cast<std::size_t>(typeCell)];
     }
-    // ... then counts to ends, the running sum in a register (not read back
-    // from the array it was just stored to, a wait of several cycles per cell) ...
-    const auto runningSum = [](std::vector<int>& starts) {
-        int* count = starts.data();
-        const std::size_t cellCount = starts.size() - 1;
-        std::size_t c = 0;
-        int sum = 0;
-#if defined(__SSE2__)
-        // Four cells at a time: each lane adds the lanes before it, then the sum so far.
-        __m128i before = _mm_setzero_si128();
-        for (; c + 4 <= cellCount; c += 4) {
-            __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(count + c));
-            x = _mm_add_epi32(x, _mm_slli_si128(x, 4));
-            x = _mm_add_epi32(x, _mm_slli_si128(x, 8));
-            x = _mm_add_epi32(x, before);
-            _mm_storeu_si128(reinterpret_cast<__m128i*>(count + c), x);
-            before = _mm_shuffle_epi32(x, _MM_SHUFFLE(3, 3, 3, 3));
-        }
-        sum = _mm_cvtsi128_si32(before);
-#endif
-        for (; c < cellCount; ++c) count[c] = sum += count[c];
-        count[cellCount] = sum;
-    };
-    runningSum(m_cellStart);
-    runningSum(m_typeCellStart);
+    // ... then counts to ends ...
+    countsToEnds(m_cellStart);
+    countsToEnds(m_typeCellStart);
     m_cellAgents.resize(static_cast<std::size_t>(m_cellStart[cells]));
     m_typeCellAgents.resize(m_cellAgents.size());
     // ... and filled from each cell's end back, in falling index order: each
