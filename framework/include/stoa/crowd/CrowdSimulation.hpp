@@ -50,7 +50,8 @@ struct alignas(64) CrowdAgent {
     bool alive = true;
     float deadFor = 0.0f;         // seconds since it was attacked (it comes back after respawnSeconds)
     float walkedSinceCrumb = 0.0f;
-    std::uint32_t messages = 0;   // bit i: message i was sent in the last step (heard in the next)
+    std::uint32_t messages = 0;   // bit i: message i, sent to it in the step before, heard in this one
+                                  // (between steps: sent in the step that ended, heard in the next)
     std::uint32_t nextMessages = 0;
 };
 
