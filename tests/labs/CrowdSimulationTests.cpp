@@ -13,6 +13,8 @@
 //     look-up in double, every step of 400 in both worlds, and at the start);
 //   - every living agent's y is heightAt(position) after every step (of
 //     1,300), but the step it comes back, which has a case of its own;
+//   - an agent's trail holds its position every trailEvery steps, oldest
+//     first, the last trailLength of them once the ring has turned;
 //   - the explorers deliver samples within 2,400 steps and leave crumbs;
 //   - the wolves attack goats within 1,200 steps, and an attacked goat comes
 //     back after respawnSeconds (241 steps of 1/30 s), on walkable ground
@@ -306,6 +308,33 @@ TEST_CASE("Crowd: every living agent stands at heightAt(position) after each ste
         }
     }
     CHECK(highest - lowest > 0.5f);   // the hills are not flat under the herd
+}
+
+TEST_CASE("Crowd: an agent's trail is its position every trailEvery steps, oldest first, the last trailLength",
+          "[crowd][simulation]") {
+    const Example e = example("predators_prey.xml");
+    CrowdSimulation crowd = crowdWith(e.world, e.maps, testCode());
+    const std::size_t count = crowd.agents().size();
+    REQUIRE(crowd.trail(0).empty());   // nothing recorded before the first step
+    // Past one turn of the ring and a bit, so the oldest positions have been overwritten.
+    const int steps = (CrowdSimulation::trailLength + 5) * CrowdSimulation::trailEvery;
+    std::vector<std::vector<glm::vec2>> recorded(count);
+    for (int step = 1; step <= steps; ++step) {
+        crowd.step();
+        if (step % CrowdSimulation::trailEvery != 0) continue;
+        for (std::size_t i = 0; i < count; ++i) recorded[i].push_back(crowd.agents()[i].position);
+        if (step == 2 * CrowdSimulation::trailEvery) REQUIRE(crowd.trail(count - 1).size() == 2);
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        INFO("agent " << i);
+        const std::vector<glm::vec2> trail = crowd.trail(i);
+        REQUIRE(trail.size() == static_cast<std::size_t>(CrowdSimulation::trailLength));
+        const std::size_t first = recorded[i].size() - trail.size();
+        for (std::size_t k = 0; k < trail.size(); ++k) {
+            REQUIRE(sameBits(trail[k].x, recorded[i][first + k].x));
+            REQUIRE(sameBits(trail[k].y, recorded[i][first + k].y));
+        }
+    }
 }
 
 // A regression test: step() once placed a goat that came back without setting

@@ -428,8 +428,10 @@ void CrowdSimulation::step() {
 void CrowdSimulation::endStep() {
     ++m_step;
     if (m_step % trailEvery == 0) {
-        const std::size_t slot = static_cast<std::size_t>(m_trailCount % trailLength);
-        for (std::size_t i = 0; i < m_agents.size(); ++i) m_trails[i * trailLength + slot] = m_agents[i].position;
+        // Slot by slot (all agents' positions of one slot side by side): one
+        // run of stores, where agent by agent would touch a cache line per agent.
+        glm::vec2* const slot = m_trails.data() + static_cast<std::size_t>(m_trailCount % trailLength) * m_agents.size();
+        for (std::size_t i = 0; i < m_agents.size(); ++i) slot[i] = m_agents[i].position;
         ++m_trailCount;
     }
     rebuildAgentGrid();
@@ -444,7 +446,7 @@ std::vector<glm::vec2> CrowdSimulation::trail(std::size_t agent) const {
     const int count = std::min(m_trailCount, trailLength);
     for (int k = 0; k < count; ++k) {
         const int slot = (m_trailCount - count + k) % trailLength;
-        points.push_back(m_trails[agent * trailLength + static_cast<std::size_t>(slot)]);
+        points.push_back(m_trails[static_cast<std::size_t>(slot) * m_agents.size() + agent]);
     }
     return points;
 }

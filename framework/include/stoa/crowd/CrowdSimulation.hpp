@@ -215,7 +215,7 @@ private:
     std::vector<CrowdAgent> m_agents;
     std::vector<glm::vec2> m_samples;
     std::vector<glm::vec2> m_crumbs;
-    std::vector<glm::vec2> m_trails;      // trailLength per agent, a ring
+    std::vector<glm::vec2> m_trails;      // a ring of trailLength slots, each every agent's position
     int m_trailCount = 0;                 // positions recorded per agent so far
     std::vector<std::string> m_messages;
     std::vector<std::string> m_animations{"stand"};   // the names CrowdAgent::animation indexes
