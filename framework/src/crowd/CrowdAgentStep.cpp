@@ -73,7 +73,7 @@ private:
         case Condition::Kind::Message:
             return condition.index >= 0 && (agent.messages & (1u << condition.index)) != 0;
         case Condition::Kind::Chance:
-            return m_crowd.randomOf(m_scratch, m_index, static_cast<std::uint32_t>(condition.line) * 2u + 1u) < condition.value;
+            return m_crowd.randomOf(m_scratch, static_cast<std::uint32_t>(condition.line) * 2u + 1u) < condition.value;
         }
         return false;
     }
@@ -188,11 +188,7 @@ int CrowdSimulation::nearestPoint(const std::vector<glm::vec2>& points, glm::vec
     return best;
 }
 
-float CrowdSimulation::randomOf(StepScratch& scratch, std::size_t index, std::uint32_t salt) const {
-    if (!scratch.randomReady) {
-        scratch.randomBase = stepHash(m_memos[index].agentHash, m_step);   // randomBase(index)
-        scratch.randomReady = true;
-    }
+float CrowdSimulation::randomOf(const StepScratch& scratch, std::uint32_t salt) {
     return randomUnit(scratch.randomBase, salt);
 }
 
@@ -342,7 +338,7 @@ inline void CrowdSimulation::runAction(std::size_t index, CrowdAgent& agent, con
         agent.speed = 0.0f;
     } else if (action.kind == Action::Kind::Wander) {
         const float turn = glm::radians(action.value) * m_world.step;
-        const float random = randomOf(scratch, index, static_cast<std::uint32_t>(action.line) * 2u);
+        const float random = randomOf(scratch, static_cast<std::uint32_t>(action.line) * 2u);
         agent.heading = wrapAngle(agent.heading + (2.0f * random - 1.0f) * turn);
         agent.speed = m_world.types[static_cast<std::size_t>(agent.type)].speed * speedScale;
     } else {
@@ -467,7 +463,8 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
     const float dt = m_world.step;
     const AgentType& type = m_world.types[static_cast<std::size_t>(agent.type)];
     const Behaviour& behaviour = m_world.behaviours[static_cast<std::size_t>(type.behaviourIndex)];
-    scratch.randomReady = false;
+    // Nearly every agent draws a number each step (a chance, a wander): the base at once, not on a first ask.
+    scratch.randomBase = stepHash(m_memos[index].agentHash, m_step);
     scratch.memoCount = 1;
     scratch.memoNext = 1;
     scratch.memoHeadings[0] = m_memos[index].heading;

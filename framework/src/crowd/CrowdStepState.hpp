@@ -36,8 +36,7 @@ struct CrowdSimulation::StepScratch {
     static constexpr int kMemo = 4;
 
     std::vector<const Action*> actions;
-    std::uint32_t randomBase = 0;   // randomBase() of the agent stepping, once asked
-    bool randomReady = false;
+    std::uint32_t randomBase = 0;   // randomBase() of the agent stepping, set as its step begins
     // direction() of the headings the agent stepping has had this step (its
     // last step's first): only a memo, so any entry of the same bits is right.
     float memoHeadings[kMemo] = {};

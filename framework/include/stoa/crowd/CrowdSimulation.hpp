@@ -174,8 +174,8 @@ private:
     /// randomFor(agent, salt) is randomFrom(randomBase(agent), salt): the base once per agent and step.
     std::uint32_t randomBase(std::size_t agent) const;
     static float randomFrom(std::uint32_t base, std::uint32_t salt);
-    /// randomFor(index, salt) for the agent stepping, its base computed on the first ask.
-    float randomOf(StepScratch& scratch, std::size_t index, std::uint32_t salt) const;
+    /// randomFor(agent, salt) for the agent stepping (scratch.randomBase is its randomBase()).
+    static float randomOf(const StepScratch& scratch, std::uint32_t salt);
     /// Where an agent in the grid stood when the step began.
     glm::vec2 startPosition(std::size_t agent) const {
         return m_cellAgents[static_cast<std::size_t>(m_places[agent])].position;
