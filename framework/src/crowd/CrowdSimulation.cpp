@@ -376,7 +376,9 @@ void CrowdSimulation::stepTheDead() {
     const float dt = m_world.step;
     m_stepKills.clear();
     // The dead first, in index order (a comeback waits for the next step to
-    // act), found by the packed flags: the living's lines are not read here.
+    // act), found by the packed flags: the living's lines are not read here,
+    // and no flag when the grid, built from the living, holds every agent.
+    if (m_cellAgents.size() == m_agents.size()) return;
     for (std::size_t i = 0; i < m_agents.size(); ++i) {
         if (m_living[i]) continue;
         CrowdAgent& agent = m_agents[i];
