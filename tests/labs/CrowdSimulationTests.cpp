@@ -20,6 +20,8 @@
 //     back after respawnSeconds (241 steps of 1/30 s), on walkable ground
 //     within its spawn area (the first comes back at step 1,208: 1,500 steps);
 //     at heightAt() of its new place;
+//   - every <chance> and <wander> draws randomFor(agent, its salt), the
+//     numbers drawn as a step begins and those drawn when asked alike;
 //   - a state or layer index out of range from the lab code throws
 //     std::out_of_range naming the function (-1 from arbitrateLayers is fine);
 //   - a <spawn> or <samples> area without walkable ground throws InputError
@@ -32,6 +34,8 @@
 #include <stoa/core/Paths.hpp>
 #include <stoa/crowd/CrowdSimulation.hpp>
 #include <stoa/crowd/CrowdXml.hpp>
+
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -441,6 +445,75 @@ TEST_CASE("Crowd: every agent plays the animation of the state or layer it is in
     // The wolves run, pounce and rest, the goats run and eat: every animation the world names is played.
     std::sort(seen.begin(), seen.end());
     CHECK(seen == std::vector<std::string>{"attack", "eat", "run", "stand"});
+}
+
+TEST_CASE("Crowd: every <chance> and <wander> draws randomFor(agent, its line's salt), however many a behaviour has",
+          "[crowd][simulation]") {
+    // The step draws a behaviour's first four numbers (its chances, then its
+    // wanders) as an agent's step begins, the rest when asked: each must be
+    // the number randomFor() gives, whichever way it was drawn.
+    const GroundMaps maps = flatGround({-10.0f, -10.0f}, {10.0f, 10.0f}, 20);
+    const auto world = [](const std::string& layers) {
+        return "<world seed=\"7\">\n"
+               "  <ground collision=\"c.png\" min=\"-10 -10\" max=\"10 10\"/>\n"
+               "  <type name=\"walker\" model=\"w.md2\" skin=\"w.png\" behaviour=\"walk\"/>\n"
+               "  <behaviour name=\"walk\" kind=\"subsumption\">\n" +
+               layers +
+               "  </behaviour>\n"
+               "  <spawn type=\"walker\" count=\"6\" x=\"0\" z=\"0\" radius=\"2\"/>\n"
+               "</world>\n";
+    };
+    SECTION("five chances: four drawn as the step begins, the fifth when asked") {
+        std::string layers;
+        for (int k = 0; k < 5; ++k)
+            layers += "    <layer name=\"c" + std::to_string(k) + "\"><when><chance per-step=\"0.3\"/></when><stop/></layer>\n";
+        layers += "    <layer name=\"rest\"><stop/></layer>\n";
+        const std::string text = world(layers);
+        CrowdSimulation crowd = crowdWith(parseCrowdWorld(text, "chances.xml"), maps, testCode());
+        const int firstLine = lineOf(text, "name=\"c0\"");
+        int fifthFired = 0;
+        for (int step = 0; step < 200; ++step) {
+            std::vector<int> expected;
+            for (std::size_t i = 0; i < crowd.agents().size(); ++i) {
+                int layer = 5;
+                for (int k = 0; k < 5 && layer == 5; ++k)
+                    if (crowd.randomFor(i, static_cast<std::uint32_t>(firstLine + k) * 2u + 1u) < 0.3f) layer = k;
+                expected.push_back(layer);
+            }
+            crowd.step();
+            for (std::size_t i = 0; i < crowd.agents().size(); ++i) {
+                INFO("step " << step << ", agent " << i);
+                REQUIRE(crowd.agents()[i].state == expected[i]);
+                fifthFired += expected[i] == 4 ? 1 : 0;
+            }
+        }
+        CHECK(fifthFired > 0);   // the number drawn when asked was asked for and decided
+    }
+    SECTION("a chance and two wanders, all drawn as the step begins") {
+        const std::string text = world("    <layer name=\"fast\"><when><chance per-step=\"0.5\"/></when><wander turn=\"90\"/></layer>\n"
+                                       "    <layer name=\"slow\"><wander turn=\"30\"/></layer>\n");
+        CrowdSimulation crowd = crowdWith(parseCrowdWorld(text, "wanders.xml"), maps, testCode());
+        const int fastLine = lineOf(text, "name=\"fast\""), slowLine = lineOf(text, "name=\"slow\"");
+        const float step = crowd.world().step;
+        const float twoPi = 6.283185307f;
+        for (int n = 0; n < 60; ++n) {
+            std::vector<float> expected;
+            for (std::size_t i = 0; i < crowd.agents().size(); ++i) {
+                const bool fast = crowd.randomFor(i, static_cast<std::uint32_t>(fastLine) * 2u + 1u) < 0.5f;
+                const int line = fast ? fastLine : slowLine;
+                const float turn = glm::radians(fast ? 90.0f : 30.0f) * step;
+                const float random = crowd.randomFor(i, static_cast<std::uint32_t>(line) * 2u);
+                expected.push_back(crowd.agents()[i].heading + (2.0f * random - 1.0f) * turn);
+            }
+            crowd.step();
+            for (std::size_t i = 0; i < crowd.agents().size(); ++i) {
+                INFO("step " << n << ", agent " << i);
+                float d = crowd.agents()[i].heading - expected[i];
+                d -= twoPi * std::round(d / twoPi);   // headings are kept in [-pi, pi)
+                REQUIRE(std::fabs(d) < 1e-4f);
+            }
+        }
+    }
 }
 
 TEST_CASE("Crowd: a state or layer out of range from the lab code throws std::out_of_range naming the function",

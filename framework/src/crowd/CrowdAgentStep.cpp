@@ -73,7 +73,7 @@ private:
         case Condition::Kind::Message:
             return condition.index >= 0 && (agent.messages & (1u << condition.index)) != 0;
         case Condition::Kind::Chance:
-            return m_crowd.randomOf(m_scratch, static_cast<std::uint32_t>(condition.line) * 2u + 1u) < condition.value;
+            return m_crowd.randomOf(m_scratch, condition.index, static_cast<std::uint32_t>(condition.line) * 2u + 1u) < condition.value;
         }
         return false;
     }
@@ -188,8 +188,8 @@ int CrowdSimulation::nearestPoint(const std::vector<glm::vec2>& points, glm::vec
     return best;
 }
 
-float CrowdSimulation::randomOf(const StepScratch& scratch, std::uint32_t salt) {
-    return randomUnit(scratch.randomBase, salt);
+float CrowdSimulation::randomOf(const StepScratch& scratch, int drawn, std::uint32_t salt) {
+    return drawn >= 0 ? scratch.drawn[drawn] : randomUnit(scratch.randomBase, salt);
 }
 
 glm::vec2 CrowdSimulation::targetPosition(int found, StepScratch& scratch) const {
@@ -338,7 +338,7 @@ inline void CrowdSimulation::runAction(std::size_t index, CrowdAgent& agent, con
         agent.speed = 0.0f;
     } else if (action.kind == Action::Kind::Wander) {
         const float turn = glm::radians(action.value) * m_world.step;
-        const float random = randomOf(scratch, static_cast<std::uint32_t>(action.line) * 2u);
+        const float random = randomOf(scratch, action.index, static_cast<std::uint32_t>(action.line) * 2u);
         agent.heading = wrapAngle(agent.heading + (2.0f * random - 1.0f) * turn);
         agent.speed = m_world.types[static_cast<std::size_t>(agent.type)].speed * speedScale;
     } else {
@@ -463,8 +463,10 @@ void CrowdSimulation::stepAgent(std::size_t index, CrowdAgent& agent, StepScratc
     const float dt = m_world.step;
     const AgentType& type = m_world.types[static_cast<std::size_t>(agent.type)];
     const Behaviour& behaviour = m_world.behaviours[static_cast<std::size_t>(type.behaviourIndex)];
-    // Nearly every agent draws a number each step (a chance, a wander): the base at once, not on a first ask.
+    // Nearly every agent draws a number each step (a chance, a wander): its
+    // behaviour's first four at once, not on the first ask.
     scratch.randomBase = stepHash(m_memos[index].agentHash, m_step);
+    randomUnits(scratch.randomBase, m_drawnSalts[static_cast<std::size_t>(type.behaviourIndex)].mixed, scratch.drawn);
     scratch.memoCount = 1;
     scratch.memoNext = 1;
     scratch.memoHeadings[0] = m_memos[index].heading;

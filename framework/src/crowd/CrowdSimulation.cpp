@@ -148,6 +148,32 @@ void CrowdSimulation::takeDirectCalls() {
     direct(m_code.stepStateMachine, m_stepStateMachine);
 }
 
+void CrowdSimulation::drawAtStepStart(Behaviour& behaviour) {
+    // The chances first (the behaviour's decisions wait on them), then the wanders.
+    static_assert(sizeof(DrawnSalts::mixed) / sizeof(std::uint32_t) == StepScratch::kDrawn);
+    DrawnSalts salts;
+    int count = 0;
+    const auto slot = [&](int& index, std::uint32_t salt) {
+        if (count == StepScratch::kDrawn) return;   // drawn when asked
+        salts.mixed[count] = salt * 0xC2B2AE35u;      // randomUnit()'s salt factor
+        index = count++;
+    };
+    const auto chances = [&](std::vector<Condition>& conditions) {
+        for (Condition& condition : conditions)
+            if (condition.kind == Condition::Kind::Chance) slot(condition.index, static_cast<std::uint32_t>(condition.line) * 2u + 1u);
+    };
+    const auto wanders = [&](std::vector<Action>& actions) {
+        for (Action& action : actions)
+            if (action.kind == Action::Kind::Wander) slot(action.index, static_cast<std::uint32_t>(action.line) * 2u);
+    };
+    for (MachineState& state : behaviour.machine.states)
+        for (Transition& transition : state.transitions) chances(transition.when);
+    for (Layer& layer : behaviour.stack.layers) chances(layer.when);
+    for (MachineState& state : behaviour.machine.states) wanders(state.actions);
+    for (Layer& layer : behaviour.stack.layers) wanders(layer.actions);
+    m_drawnSalts.push_back(salts);
+}
+
 void CrowdSimulation::resolveNames() {
     // Names become indices once, so that a step compares no strings.
     const auto animationIndex = [&](const std::string& name) {
@@ -177,6 +203,7 @@ void CrowdSimulation::resolveNames() {
         }
     };
     for (Behaviour& behaviour : m_world.behaviours) {
+        drawAtStepStart(behaviour);
         for (MachineState& state : behaviour.machine.states) {
             state.animationIndex = animationIndex(state.animation);
             for (Action& action : state.actions) resolveAction(action);

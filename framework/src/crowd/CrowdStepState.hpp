@@ -34,9 +34,11 @@ struct CrowdSimulation::Outcome {
 /// parallel pass records what an agent did to others (outcome null: the serial step).
 struct CrowdSimulation::StepScratch {
     static constexpr int kMemo = 4;
+    static constexpr int kDrawn = 4;
 
     std::vector<const Action*> actions;
     std::uint32_t randomBase = 0;   // randomBase() of the agent stepping, set as its step begins
+    float drawn[kDrawn] = {};       // its behaviour's first kDrawn numbers (Condition::index, Action::index)
     // direction() of the headings the agent stepping has had this step (its
     // last step's first): only a memo, so any entry of the same bits is right.
     float memoHeadings[kMemo] = {};

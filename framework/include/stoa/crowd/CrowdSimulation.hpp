@@ -141,6 +141,8 @@ private:
     glm::vec2 randomWalkablePoint(glm::vec2 centre, float radius, std::uint32_t salt, const std::string& what,
                                   int line);
     void resolveNames();
+    /// Gives the behaviour's chances and wanders their slots in StepScratch::drawn (m_drawnSalts).
+    void drawAtStepStart(Behaviour& behaviour);
     /// The lab's look-ups and layers as plain functions, where they are (m_walkableAt ...).
     void takeDirectCalls();
     void measureReaches();
@@ -174,8 +176,9 @@ private:
     /// randomFor(agent, salt) is randomFrom(randomBase(agent), salt): the base once per agent and step.
     std::uint32_t randomBase(std::size_t agent) const;
     static float randomFrom(std::uint32_t base, std::uint32_t salt);
-    /// randomFor(agent, salt) for the agent stepping (scratch.randomBase is its randomBase()).
-    static float randomOf(const StepScratch& scratch, std::uint32_t salt);
+    /// randomFor(agent, salt) for the agent stepping: drawn as its step began
+    /// where `drawn` (a Condition's or Action's index) is a slot, else now.
+    static float randomOf(const StepScratch& scratch, int drawn, std::uint32_t salt);
     /// Where an agent in the grid stood when the step began.
     glm::vec2 startPosition(std::size_t agent) const {
         return m_cellAgents[static_cast<std::size_t>(m_places[agent])].position;
@@ -227,6 +230,14 @@ private:
     float m_lookAhead = 0.0f;    // the farthest <blocked ahead>, metres (prefetched)
     bool m_parallelSafe = true;  // no samples or crumbs: what one agent does to the others is a kill or a message
     std::size_t m_parallelFrom = 0;   // living agents from which a step is parallel
+    // Per behaviour, the numbers its agents draw as their step begins: its
+    // chances first, then its wanders, at most four (StepScratch::kDrawn), each
+    // salt times randomUnit()'s factor. A chance decides which way the step
+    // goes: drawn early, it is ready when the behaviour asks.
+    struct DrawnSalts {
+        std::uint32_t mixed[4] = {};
+    };
+    std::vector<DrawnSalts> m_drawnSalts;
 
     // The living agents bucketed in square cells, rebuilt after each step:
     // the senses see the others where they stood when the step began, and

@@ -39,7 +39,8 @@ struct Condition {
     float value = 0.0f;     // Near, AtBase, Blocked, TimeInState, Chance (see above)
     bool negated = false;   // <not>: holds when the test fails
     int line = 0;
-    int index = -1;         // set by CrowdSimulation: the index of the type (Sees, Near) or message (Message) named
+    int index = -1;         // set by CrowdSimulation: the index of the type (Sees, Near) or message (Message) named;
+                            // Chance: where the step keeps its number, drawn as the agent's step begins (-1: drawn when asked)
 };
 
 /// Something an agent does during a step, in the order its state or layer lists them.
@@ -62,7 +63,8 @@ struct Action {
     float value = 0.0f;
     int line = 0;
     /// Set by CrowdSimulation: the index of the type (Seek an agent, Flee,
-    /// Attack) or message (Send) named; Seek also kSeekBase, kSeekSample, kSeekCrumb.
+    /// Attack) or message (Send) named; Seek also kSeekBase, kSeekSample, kSeekCrumb;
+    /// Wander: where the step keeps its number, drawn as the agent's step begins (-1: drawn when asked).
     int index = -1;
     static constexpr int kSeekBase = -2, kSeekSample = -3, kSeekCrumb = -4;
 };
