@@ -1,14 +1,7 @@
 // Lab 10: CrowdSimulation (stoa/crowd/CrowdSimulation.hpp) on the example
 // worlds (assets/crowds/mars_explorers.xml and predators_prey.xml) and on
-// small worlds written here. The simulation runs on a CrowdFunctions of small
-// implementations written below (correct ones, independent of
-// solutions/10_crowds; being correct lab code, this file lives in tests/labs/,
-// which the student release leaves out). Checked:
-//   - the same world and seed give bit-identical agents, samples and crumbs
-//     after 500 steps in two runs; another seed gives other agents;
-//   - the parallel step (setThreads(2), setThreads(3)) gives the serial crowd
-//     bit for bit, every 50 steps of 300, in a crowd dense enough for kills
-//     and in the explorers' world (which steps on one thread);
+// small worlds written here, with the lab code of CrowdTestCode.hpp (that a
+// crowd depends on its world and seed alone: CrowdDeterminismTests.cpp). Checked:
 //   - no living agent ever stands on a texel the collision map blocks (a
 //     look-up in double, every step of 400 in both worlds, and at the start);
 //   - every living agent's y is heightAt(position) after every step (of
@@ -20,14 +13,14 @@
 //     back after respawnSeconds (241 steps of 1/30 s), on walkable ground
 //     within its spawn area (the first comes back at step 1,208: 1,500 steps);
 //     at heightAt() of its new place;
-//   - every <chance> and <wander> draws randomFor(agent, its salt), the
-//     numbers drawn as a step begins and those drawn when asked alike;
+//   - every agent plays the animation of the state or layer it is in;
 //   - a state or layer index out of range from the lab code throws
 //     std::out_of_range naming the function (-1 from arbitrateLayers is fine);
 //   - a <spawn> or <samples> area without walkable ground throws InputError
 //     naming the world file and that element's line; a walkableAt() that
 //     refuses white ground is named in the message.
 
+#include "CrowdTestCode.hpp"
 #include "catch.hpp"
 
 #include <stoa/core/InputError.hpp>
@@ -35,7 +28,6 @@
 #include <stoa/crowd/CrowdSimulation.hpp>
 #include <stoa/crowd/CrowdXml.hpp>
 
-#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -45,89 +37,11 @@
 #include <vector>
 
 using namespace stoa;
+using namespace stoa::crowdtest;
 
 namespace {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-// The lab code the simulation runs on here.
-
-bool allHold(const std::vector<Condition>& when, const CrowdSenses& senses) {
-    return std::all_of(when.begin(), when.end(), [&](const Condition& c) { return senses.holds(c); });
-}
-
-int testStateMachine(const StateMachine& machine, int current, const CrowdSenses& senses,
-                     std::vector<const Action*>& actions) {
-    int next = current;
-    for (const Transition& transition : machine.states.at(static_cast<std::size_t>(current)).transitions) {
-        if (allHold(transition.when, senses)) {
-            next = transition.target;
-            break;
-        }
-    }
-    actions.clear();
-    for (const Action& action : machine.states.at(static_cast<std::size_t>(next)).actions) actions.push_back(&action);
-    return next;
-}
-
-int testLayers(const SubsumptionStack& stack, const CrowdSenses& senses) {
-    for (std::size_t i = 0; i < stack.layers.size(); ++i)
-        if (allHold(stack.layers[i].when, senses)) return static_cast<int>(i);
-    return -1;
-}
-
-bool testWalkable(const CollisionMap& map, glm::vec2 xz) {
-    const GroundGrid& g = map.grid;
-    const float u = (xz.x - g.footprintMin.x) * static_cast<float>(g.width) / (g.footprintMax.x - g.footprintMin.x);
-    const float v = (xz.y - g.footprintMin.y) * static_cast<float>(g.height) / (g.footprintMax.y - g.footprintMin.y);
-    if (!(u >= 0.0f && v >= 0.0f && u < static_cast<float>(g.width) && v < static_cast<float>(g.height))) return false;
-    const int col = std::min(static_cast<int>(u), g.width - 1), row = std::min(static_cast<int>(v), g.height - 1);
-    return map.walkable[static_cast<std::size_t>(row * g.width + col)] != 0;
-}
-
-float testHeight(const HeightField& field, glm::vec2 xz) {
-    const GroundGrid& g = field.grid;
-    const float u = std::clamp((xz.x - g.footprintMin.x) * g.width / (g.footprintMax.x - g.footprintMin.x) - 0.5f, 0.0f,
-                               static_cast<float>(g.width - 1));
-    const float v = std::clamp((xz.y - g.footprintMin.y) * g.height / (g.footprintMax.y - g.footprintMin.y) - 0.5f,
-                               0.0f, static_cast<float>(g.height - 1));
-    const int c0 = static_cast<int>(u), r0 = static_cast<int>(v);
-    const int c1 = std::min(c0 + 1, g.width - 1), r1 = std::min(r0 + 1, g.height - 1);
-    const float s = u - c0, t = v - r0;
-    const auto at = [&](int c, int r) { return field.values[static_cast<std::size_t>(r * g.width + c)]; };
-    const float value = (1 - t) * ((1 - s) * at(c0, r0) + s * at(c1, r0)) + t * ((1 - s) * at(c0, r1) + s * at(c1, r1));
-    return field.heightMin + (field.heightMax - field.heightMin) * value;
-}
-
-/// The simulation needs only these four; the key-frame functions stay unset.
-CrowdFunctions testCode() {
-    CrowdFunctions code;
-    code.stepStateMachine = &testStateMachine;
-    code.arbitrateLayers = &testLayers;
-    code.walkableAt = &testWalkable;
-    code.heightAt = &testHeight;
-    return code;
-}
-
-/// A simulation on `code` (CrowdSimulation takes the student's functions from the
-/// table when it is made, so the table goes back as it was at once).
-CrowdSimulation crowdWith(const CrowdWorld& world, GroundMaps maps, const CrowdFunctions& code) {
-    StudentCodeScope scope;
-    studentCode().crowds = code;
-    return CrowdSimulation(world, std::move(maps));
-}
-
-struct Example {
-    CrowdWorld world;
-    GroundMaps maps;
-};
-
-Example example(const std::string& name) {
-    Example e;
-    e.world = loadCrowdWorld(paths::assetsDir() / "crowds" / name);
-    e.maps = loadGroundMaps(e.world.ground, e.world.file);
-    return e;
-}
 
 /// Whether every point within 1e-4 m of `xz` lies on a blocked texel or off
 /// the map (so a point on a texel's edge is not held against the simulation).
@@ -143,40 +57,6 @@ bool standsOnBlockedGround(const CollisionMap& map, glm::vec2 xz) {
         }
     }
     return true;
-}
-
-bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-bool sameBits(glm::vec2 a, glm::vec2 b) { return sameBits(a.x, b.x) && sameBits(a.y, b.y); }
-
-/// Every field of every agent, the samples and the crumbs, bit for bit.
-void requireIdentical(const CrowdSimulation& a, const CrowdSimulation& b) {
-    REQUIRE(a.agents().size() == b.agents().size());
-    for (std::size_t i = 0; i < a.agents().size(); ++i) {
-        const CrowdAgent& p = a.agents()[i];
-        const CrowdAgent& q = b.agents()[i];
-        INFO("agent " << i);
-        REQUIRE(sameBits(p.position, q.position));
-        REQUIRE(sameBits(p.y, q.y));
-        REQUIRE(sameBits(p.heading, q.heading));
-        REQUIRE(sameBits(p.speed, q.speed));
-        REQUIRE(p.state == q.state);
-        REQUIRE(sameBits(p.timeInState, q.timeInState));
-        REQUIRE(sameBits(p.animationTime, q.animationTime));
-        REQUIRE(p.animation == q.animation);
-        REQUIRE(p.carrying == q.carrying);
-        REQUIRE(p.alive == q.alive);
-        REQUIRE(sameBits(p.deadFor, q.deadFor));
-        REQUIRE(sameBits(p.walkedSinceCrumb, q.walkedSinceCrumb));
-        REQUIRE(p.messages == q.messages);
-    }
-    REQUIRE(a.samples().size() == b.samples().size());
-    for (std::size_t i = 0; i < a.samples().size(); ++i) REQUIRE(sameBits(a.samples()[i], b.samples()[i]));
-    REQUIRE(a.crumbs().size() == b.crumbs().size());
-    for (std::size_t i = 0; i < a.crumbs().size(); ++i) REQUIRE(sameBits(a.crumbs()[i], b.crumbs()[i]));
-    REQUIRE(a.statistics().attacks == b.statistics().attacks);
-    REQUIRE(a.statistics().delivered == b.statistics().delivered);
-    REQUIRE(a.statistics().blockedMoves == b.statistics().blockedMoves);
 }
 
 /// One walker type with a one-state machine (or a one-layer stack), a
@@ -197,12 +77,6 @@ std::string smallWorld(bool subsumption, const std::string& samples = "") {
     return text;
 }
 
-int lineOf(const std::string& text, const std::string& marker) {
-    const std::size_t at = text.find(marker);
-    REQUIRE(at != std::string::npos);
-    return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
-}
-
 /// flatGround over [-10, 10]^2 (20 x 20 texels of 1 m) with the square [-4, 4]^2 blocked.
 GroundMaps groundWithBlockedMiddle() {
     GroundMaps maps = flatGround({-10.0f, -10.0f}, {10.0f, 10.0f}, 20);
@@ -212,65 +86,6 @@ GroundMaps groundWithBlockedMiddle() {
 }
 
 } // namespace
-
-TEST_CASE("Crowd: the same world and seed give bit-identical agents after 500 steps", "[crowd][simulation]") {
-    for (const char* name : {"mars_explorers.xml", "predators_prey.xml"}) {
-        INFO(name);
-        const Example e = example(name);
-        CrowdSimulation first = crowdWith(e.world, e.maps, testCode());
-        CrowdSimulation second = crowdWith(e.world, e.maps, testCode());
-        first.advance(500);
-        for (int i = 0; i < 500; ++i) second.step();
-        REQUIRE(first.stepCount() == 500);
-        requireIdentical(first, second);
-    }
-}
-
-TEST_CASE("Crowd: the parallel step gives the serial crowd bit for bit", "[crowd][simulation][parallel]") {
-    // The predators and prey ten times as many, the wolves placed among the
-    // goats, so that in 300 steps wolves kill goats stepped on other threads,
-    // goats bleat to goats across them, and seekers read positions the step
-    // has changed; then the explorers, whose samples and crumbs keep them on one thread.
-    Example dense = example("predators_prey.xml");
-    for (SpawnArea& area : dense.world.spawns) {
-        area.count *= 10;
-        area.centre = dense.world.spawns.front().centre;
-        area.radius = dense.world.spawns.front().radius;
-    }
-    const Example explorers = example("mars_explorers.xml");
-    for (const Example* e : {static_cast<const Example*>(&dense), &explorers}) {
-        for (const int threads : {2, 3}) {
-            INFO(e->world.file.filename().string() << " on " << threads << " threads");
-            CrowdSimulation serial = crowdWith(e->world, e->maps, testCode());
-            CrowdSimulation parallel = crowdWith(e->world, e->maps, testCode());
-            parallel.setThreads(threads, 0);
-            REQUIRE(parallel.threads() == threads);
-            for (int round = 0; round < 6; ++round) {
-                serial.advance(50);
-                parallel.advance(50);
-                INFO("after " << serial.stepCount() << " steps");
-                requireIdentical(serial, parallel);
-            }
-            if (e == &dense) CHECK(serial.statistics().attacks > 10);
-        }
-    }
-}
-
-TEST_CASE("Crowd: another seed gives other agents", "[crowd][simulation]") {
-    for (const char* name : {"mars_explorers.xml", "predators_prey.xml"}) {
-        INFO(name);
-        Example e = example(name);
-        CrowdSimulation first = crowdWith(e.world, e.maps, testCode());
-        e.world.seed += 1;
-        CrowdSimulation second = crowdWith(e.world, e.maps, testCode());
-        first.advance(100);
-        second.advance(100);
-        int differ = 0;
-        for (std::size_t i = 0; i < first.agents().size(); ++i)
-            differ += !sameBits(first.agents()[i].position, second.agents()[i].position);
-        CHECK(differ > static_cast<int>(first.agents().size()) / 2);
-    }
-}
 
 TEST_CASE("Crowd: no agent ever stands on a texel the collision map blocks", "[crowd][simulation]") {
     for (const char* name : {"mars_explorers.xml", "predators_prey.xml"}) {
@@ -445,75 +260,6 @@ TEST_CASE("Crowd: every agent plays the animation of the state or layer it is in
     // The wolves run, pounce and rest, the goats run and eat: every animation the world names is played.
     std::sort(seen.begin(), seen.end());
     CHECK(seen == std::vector<std::string>{"attack", "eat", "run", "stand"});
-}
-
-TEST_CASE("Crowd: every <chance> and <wander> draws randomFor(agent, its line's salt), however many a behaviour has",
-          "[crowd][simulation]") {
-    // The step draws a behaviour's first four numbers (its chances, then its
-    // wanders) as an agent's step begins, the rest when asked: each must be
-    // the number randomFor() gives, whichever way it was drawn.
-    const GroundMaps maps = flatGround({-10.0f, -10.0f}, {10.0f, 10.0f}, 20);
-    const auto world = [](const std::string& layers) {
-        return "<world seed=\"7\">\n"
-               "  <ground collision=\"c.png\" min=\"-10 -10\" max=\"10 10\"/>\n"
-               "  <type name=\"walker\" model=\"w.md2\" skin=\"w.png\" behaviour=\"walk\"/>\n"
-               "  <behaviour name=\"walk\" kind=\"subsumption\">\n" +
-               layers +
-               "  </behaviour>\n"
-               "  <spawn type=\"walker\" count=\"6\" x=\"0\" z=\"0\" radius=\"2\"/>\n"
-               "</world>\n";
-    };
-    SECTION("five chances: four drawn as the step begins, the fifth when asked") {
-        std::string layers;
-        for (int k = 0; k < 5; ++k)
-            layers += "    <layer name=\"c" + std::to_string(k) + "\"><when><chance per-step=\"0.3\"/></when><stop/></layer>\n";
-        layers += "    <layer name=\"rest\"><stop/></layer>\n";
-        const std::string text = world(layers);
-        CrowdSimulation crowd = crowdWith(parseCrowdWorld(text, "chances.xml"), maps, testCode());
-        const int firstLine = lineOf(text, "name=\"c0\"");
-        int fifthFired = 0;
-        for (int step = 0; step < 200; ++step) {
-            std::vector<int> expected;
-            for (std::size_t i = 0; i < crowd.agents().size(); ++i) {
-                int layer = 5;
-                for (int k = 0; k < 5 && layer == 5; ++k)
-                    if (crowd.randomFor(i, static_cast<std::uint32_t>(firstLine + k) * 2u + 1u) < 0.3f) layer = k;
-                expected.push_back(layer);
-            }
-            crowd.step();
-            for (std::size_t i = 0; i < crowd.agents().size(); ++i) {
-                INFO("step " << step << ", agent " << i);
-                REQUIRE(crowd.agents()[i].state == expected[i]);
-                fifthFired += expected[i] == 4 ? 1 : 0;
-            }
-        }
-        CHECK(fifthFired > 0);   // the number drawn when asked was asked for and decided
-    }
-    SECTION("a chance and two wanders, all drawn as the step begins") {
-        const std::string text = world("    <layer name=\"fast\"><when><chance per-step=\"0.5\"/></when><wander turn=\"90\"/></layer>\n"
-                                       "    <layer name=\"slow\"><wander turn=\"30\"/></layer>\n");
-        CrowdSimulation crowd = crowdWith(parseCrowdWorld(text, "wanders.xml"), maps, testCode());
-        const int fastLine = lineOf(text, "name=\"fast\""), slowLine = lineOf(text, "name=\"slow\"");
-        const float step = crowd.world().step;
-        const float twoPi = 6.283185307f;
-        for (int n = 0; n < 60; ++n) {
-            std::vector<float> expected;
-            for (std::size_t i = 0; i < crowd.agents().size(); ++i) {
-                const bool fast = crowd.randomFor(i, static_cast<std::uint32_t>(fastLine) * 2u + 1u) < 0.5f;
-                const int line = fast ? fastLine : slowLine;
-                const float turn = glm::radians(fast ? 90.0f : 30.0f) * step;
-                const float random = crowd.randomFor(i, static_cast<std::uint32_t>(line) * 2u);
-                expected.push_back(crowd.agents()[i].heading + (2.0f * random - 1.0f) * turn);
-            }
-            crowd.step();
-            for (std::size_t i = 0; i < crowd.agents().size(); ++i) {
-                INFO("step " << n << ", agent " << i);
-                float d = crowd.agents()[i].heading - expected[i];
-                d -= twoPi * std::round(d / twoPi);   // headings are kept in [-pi, pi)
-                REQUIRE(std::fabs(d) < 1e-4f);
-            }
-        }
-    }
 }
 
 TEST_CASE("Crowd: a state or layer out of range from the lab code throws std::out_of_range naming the function",
