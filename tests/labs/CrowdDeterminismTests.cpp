@@ -24,7 +24,6 @@
 using namespace stoa;
 using namespace stoa::crowdtest;
 
-
 TEST_CASE("Crowd: the same world and seed give bit-identical agents after 500 steps", "[crowd][simulation]") {
     for (const char* name : {"mars_explorers.xml", "predators_prey.xml"}) {
         INFO(name);
