@@ -36,16 +36,21 @@ inline std::uint32_t stepHash(std::uint32_t agentHash, long long step) {
     return hash32(agentHash ^ static_cast<std::uint32_t>(step) * 0x85EBCA6Bu);
 }
 
-/// A number in [0, 1) for (base, salt).
-inline float randomUnit(std::uint32_t base, std::uint32_t salt) {
-    const std::uint32_t x = hash32(base ^ salt * 0xC2B2AE35u);
+/// A salt as randomUnit() mixes it into the base (a salt's part, computed once where the salt is known).
+inline std::uint32_t mixedSalt(std::uint32_t salt) { return salt * 0xC2B2AE35u; }
+
+/// randomUnit() of a salt already mixed (mixedSalt()).
+inline float randomMixed(std::uint32_t base, std::uint32_t mixed) {
+    const std::uint32_t x = hash32(base ^ mixed);
     return static_cast<float>(x >> 8u) * (1.0f / 16777216.0f);
 }
 
-/// randomUnit(base, salt) for four salts at once, each given as salt * 0xC2B2AE35u
-/// (randomUnit()'s first step). With SSE2 the four side by side: the same
-/// integer operations lane by lane (a 32-bit product is the low half of the
-/// 64-bit one), so the same numbers.
+/// A number in [0, 1) for (base, salt).
+inline float randomUnit(std::uint32_t base, std::uint32_t salt) { return randomMixed(base, mixedSalt(salt)); }
+
+/// randomMixed(base, mixedSalts[i]) for four salts at once. With SSE2 the
+/// four side by side: the same integer operations lane by lane (a 32-bit
+/// product is the low half of the 64-bit one), so the same numbers.
 inline void randomUnits(std::uint32_t base, const std::uint32_t mixedSalts[4], float units[4]) {
 #if defined(__SSE2__)
     const auto times = [](__m128i x, std::uint32_t factor) {
@@ -66,10 +71,7 @@ inline void randomUnits(std::uint32_t base, const std::uint32_t mixedSalts[4], f
     // 24 bits, converted exactly, times 2^-24 exactly.
     _mm_storeu_ps(units, _mm_mul_ps(_mm_cvtepi32_ps(_mm_srli_epi32(x, 8)), _mm_set1_ps(1.0f / 16777216.0f)));
 #else
-    for (int i = 0; i < 4; ++i) {
-        const std::uint32_t x = hash32(base ^ mixedSalts[i]);
-        units[i] = static_cast<float>(x >> 8u) * (1.0f / 16777216.0f);
-    }
+    for (int i = 0; i < 4; ++i) units[i] = randomMixed(base, mixedSalts[i]);
 #endif
 }
 

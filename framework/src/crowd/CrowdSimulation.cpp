@@ -155,7 +155,7 @@ void CrowdSimulation::drawAtStepStart(Behaviour& behaviour) {
     int count = 0;
     const auto slot = [&](int& index, std::uint32_t salt) {
         if (count == StepScratch::kDrawn) return;   // drawn when asked
-        salts.mixed[count] = salt * 0xC2B2AE35u;      // randomUnit()'s salt factor
+        salts.mixed[count] = mixedSalt(salt);
         index = count++;
     };
     const auto chances = [&](std::vector<Condition>& conditions) {

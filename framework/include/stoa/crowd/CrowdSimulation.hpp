@@ -232,7 +232,7 @@ private:
     std::size_t m_parallelFrom = 0;   // living agents from which a step is parallel
     // Per behaviour, the numbers its agents draw as their step begins: its
     // chances first, then its wanders, at most four (StepScratch::kDrawn), each
-    // salt times randomUnit()'s factor. A chance decides which way the step
+    // salt mixed as randomUnit() mixes it. A chance decides which way the step
     // goes: drawn early, it is ready when the behaviour asks.
     struct DrawnSalts {
         std::uint32_t mixed[4] = {};
